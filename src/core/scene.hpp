@@ -1,0 +1,83 @@
+// The validated, fully resolved scene: every key of INTERFACE.md with its default filled in.
+// Produced by io/scene_reader (TOML + --set overrides), consumed by setup and the run loop.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+namespace arksph {
+
+enum class SideKind { wall, periodic };
+enum class SlipKind { no_slip, free_slip };
+
+// One side of the box: left, right, bottom, top (index 0..3; 1D uses left, right only).
+struct SideSpec {
+  SideKind kind = SideKind::wall;
+  SlipKind slip = SlipKind::no_slip;
+  std::array<double, 2> velocity{0.0, 0.0};  // wall velocity w (moving lid)
+};
+
+struct PhaseSpec {
+  std::string where;   // muParser expression in x, y; true (non-zero) selects the particle
+  double density = 1;  // reference density of the phase (equal number density, other mass)
+};
+
+struct Scene {
+  std::string source = "<embedded default>";  // file the scene came from (for messages)
+
+  // [scene]
+  std::string name = "unnamed";
+  int dimension = 2;
+
+  // [domain]
+  std::array<double, 2> min{0, 0}, max{1, 1};
+
+  // [boundary] left, right, bottom, top
+  std::array<SideSpec, 4> sides{};
+  double corner_alpha = 0.0;          // Szewc et al. 2012 eq. 46, range [-1, 1]
+  bool free_slip_divergence = false;  // Szewc §6: free-slip images for the velocity divergence only
+
+  // [fluid]
+  double spacing = 0.02;
+  double density = 1.0;
+  double viscosity = 0.01;  // kinematic nu
+  std::vector<std::string> body_force{"0", "0"};
+
+  // [initial]
+  std::vector<std::string> initial_velocity{"0", "0"};
+
+  // [[phase]]
+  std::vector<PhaseSpec> phases;
+
+  // [method]
+  std::string scheme = "wcsph";
+  std::string kernel = "wendland_quintic";
+  double h_over_dx = 2.0;
+  std::string viscosity_model = "morris";
+  double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
+  double tait_gamma = 7.0;             // C&R eq. 7
+  std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
+  std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
+  std::string density_correction = "none";
+
+  // [time]
+  double end = 1.0;
+  std::string integrator = "ARKODE_HEUN_EULER_2_1_2";
+  double dt = 0.0;        // 0: adaptive, limited by the stability function; > 0: fixed step
+  double cfl = 0.25;      // coefficient of Szewc eqs. 34-35
+  double rtol = 1e-4, atol = 1e-8;  // adaptive mode only
+  long max_steps = 100000000;
+
+  // [output]
+  std::string directory = "runs/unnamed";
+  double every = 0.0;  // 0: only first and last frame
+
+  // [metrics]
+  int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors
+  bool poiseuille = false;  // Basa et al. 2008 eqs. 36-39
+
+  // The resolved scene as TOML text (all keys), written into summary.json.
+  std::string resolved_toml;
+};
+
+}  // namespace arksph

@@ -1,0 +1,23 @@
+// A read-only view of the particle fields that output writers need (real particles only).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace arksph {
+
+struct Frame {
+  int dimension = 2;
+  std::size_t n = 0;
+  double time = 0;
+  const double* x = nullptr;  // positions (y may be null in 1D)
+  const double* y = nullptr;
+  const double* u = nullptr;  // velocity components (v may be null in 1D)
+  const double* v = nullptr;
+  const double* pressure = nullptr;
+  const double* density = nullptr;
+  const double* mass = nullptr;
+  const std::int64_t* id = nullptr;
+  const std::int32_t* phase = nullptr;
+};
+
+}  // namespace arksph

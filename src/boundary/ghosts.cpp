@@ -1,0 +1,99 @@
+#include "boundary/ghosts.hpp"
+
+namespace arksph {
+
+namespace {
+using Map = std::array<double, 4>;
+constexpr Map identity{1, 1, 0, 0};
+
+// Reflection across a wall whose normal is along `axis`.
+Map wall_map(const SideSpec& s, int axis, bool force_free_slip) {
+  if (s.slip == SlipKind::free_slip || force_free_slip) {
+    Map m = identity;
+    m[axis] = -1.0;  // normal component reversed, tangential kept
+    return m;
+  }
+  return {-1, -1, 2 * s.velocity[0], 2 * s.velocity[1]};  // u' = 2w - u
+}
+
+// Composition: apply a then b.  u -> sb*(sa*u + ba) + bb
+Map compose(const Map& a, const Map& b) {
+  return {a[0] * b[0], a[1] * b[1], b[0] * a[2] + b[2], b[1] * a[3] + b[3]};
+}
+}  // namespace
+
+GhostBuilder::GhostBuilder(const Scene& scene, double support_radius)
+    : dim_(scene.dimension),
+      radius_(support_radius),
+      alpha_(scene.corner_alpha),
+      free_slip_div_(scene.free_slip_divergence),
+      lo_(scene.min),
+      hi_(scene.max),
+      sides_(scene.sides) {
+  for (int k = 0; k < dim_; ++k) len_[k] = hi_[k] - lo_[k];
+  any_side_ = true;
+  for (int s = 0; s < 2 * dim_; ++s)
+    if (sides_[s].kind == SideKind::wall) any_wall_ = true;
+}
+
+void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostSet& g) const {
+  g.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double p[2] = {x[i], y ? y[i] : 0.0};
+    // Candidate images along each axis: index 0 is "no image".
+    struct Option {
+      double coord;
+      Map map, div_map;
+      bool wall;
+      int side;
+    };
+    Option opts[2][3];
+    int nopt[2] = {1, 1};
+    for (int k = 0; k < 2; ++k) opts[k][0] = {p[k], identity, identity, false, -1};
+    for (int k = 0; k < dim_; ++k) {
+      for (int end = 0; end < 2; ++end) {
+        const int side = 2 * k + end;  // left,right,bottom,top
+        const double dist = end == 0 ? p[k] - lo_[k] : hi_[k] - p[k];
+        if (dist >= radius_) continue;
+        const SideSpec& s = sides_[side];
+        Option o;
+        o.side = side;
+        if (s.kind == SideKind::periodic) {
+          o.coord = end == 0 ? p[k] + len_[k] : p[k] - len_[k];
+          o.map = o.div_map = identity;
+          o.wall = false;
+        } else {
+          const double plane = end == 0 ? lo_[k] : hi_[k];
+          o.coord = 2 * plane - p[k];
+          o.map = wall_map(s, k, false);
+          o.div_map = wall_map(s, k, free_slip_div_);
+          o.wall = true;
+        }
+        opts[k][nopt[k]++] = o;
+      }
+    }
+    for (int ix = 0; ix < nopt[0]; ++ix) {
+      for (int iy = 0; iy < nopt[1]; ++iy) {
+        if (ix == 0 && iy == 0) continue;
+        const Option& ox = opts[0][ix];
+        const Option& oy = opts[1][iy];
+        Map m = compose(ox.map, oy.map);
+        if (ox.wall && oy.wall && sides_[ox.side].slip == SlipKind::no_slip &&
+            sides_[oy.side].slip == SlipKind::no_slip) {
+          // Corner image of two no-slip walls, Szewc eq. 46: u''' = u + 2 alpha (w1 + w2).
+          const auto& w1 = sides_[ox.side].velocity;
+          const auto& w2 = sides_[oy.side].velocity;
+          m = {1, 1, 2 * alpha_ * (w1[0] + w2[0]), 2 * alpha_ * (w1[1] + w2[1])};
+        }
+        const Map dm = free_slip_div_ ? compose(ox.div_map, oy.div_map) : m;
+        g.source.push_back(static_cast<std::uint32_t>(i));
+        g.x.push_back(ox.coord);
+        g.y.push_back(oy.coord);
+        g.map.push_back(m);
+        g.div_map.push_back(dm);
+      }
+    }
+  }
+}
+
+}  // namespace arksph

@@ -1,0 +1,61 @@
+// Ghost particles for the sides of the box (Cummins & Rudman 1999 §2.5; Szewc et al. 2012 §6).
+//
+// For each real particle within the support radius of a side, an image is placed:
+//   periodic side: the particle shifted by the box length (same velocity);
+//   wall: the mirror image r' = 2d + r (Szewc eq. 38) with
+//     no-slip velocity  u' = 2 w - u                      (Szewc eq. 39),
+//     free-slip velocity: normal component reversed, tangential kept (Szewc Fig. 4a).
+// Near a corner of two sides, the product of the images along both axes is added; for two
+// no-slip walls the diagonal image carries u''' = u + 2 alpha (w1 + w2)   (Szewc eq. 46),
+// otherwise the composition of the two reflections (free-slip corner: Szewc eq. 53).
+// Mass, density and pressure of a ghost are those of its source (Szewc eqs. 39, 41).
+//
+// Each ghost's velocity is an affine map of its source's: u'_k = s_k u_k + b_k, one map for the
+// viscous terms and one for the velocity divergence (free-slip option of Szewc §6).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/scene.hpp"
+
+namespace arksph {
+
+struct GhostSet {
+  std::vector<std::uint32_t> source;  // real particle each ghost images
+  std::vector<double> x, y;           // positions
+  std::vector<std::array<double, 4>> map;      // {s_x, s_y, b_x, b_y} for the viscous terms
+  std::vector<std::array<double, 4>> div_map;  // same for the velocity divergence
+  std::size_t size() const { return source.size(); }
+  void clear() {
+    source.clear();
+    x.clear();
+    y.clear();
+    map.clear();
+    div_map.clear();
+  }
+};
+
+class GhostBuilder {
+ public:
+  GhostBuilder(const Scene& scene, double support_radius);
+  bool active() const { return any_side_; }
+  bool has_walls() const { return any_wall_; }
+  // Images of the n real particles at (x, y) (y null in 1D).
+  void build(const double* x, const double* y, std::size_t n, GhostSet& ghosts) const;
+
+ private:
+  // One candidate operation along one axis: shift (periodic) or reflection (wall).
+  struct AxisImage {
+    bool wall = false;
+    double plane = 0;   // wall position (reflection) or shift length (periodic)
+    int side = 0;       // index into scene sides
+  };
+  int dim_;
+  double radius_, alpha_;
+  bool free_slip_div_, any_side_ = false, any_wall_ = false;
+  std::array<double, 2> lo_{}, hi_{}, len_{};
+  std::array<SideSpec, 4> sides_{};
+};
+
+}  // namespace arksph

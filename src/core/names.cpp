@@ -1,0 +1,28 @@
+// Registered names by family, gathered from the modules that own them.
+#include "core/names.hpp"
+
+#include <algorithm>
+
+#include "integrate/erk_integrator.hpp"
+#include "kernels/kernel.hpp"
+#include "rhs/terms.hpp"
+
+namespace arksph {
+
+std::vector<std::string> registered_names(const std::string& family) {
+  if (family == "kernel") return kernel_names();
+  if (family == "scheme") return {"wcsph"};
+  if (family == "viscosity_model") return viscosity_model_names();
+  if (family == "density_mode") return {"continuity", "summation"};
+  if (family == "pressure_gradient") return pressure_gradient_names();
+  if (family == "density_correction") return {"none"};
+  if (family == "erk_table") return erk_table_names();
+  return {};
+}
+
+bool is_registered(const std::string& family, const std::string& name) {
+  const auto names = registered_names(family);
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace arksph

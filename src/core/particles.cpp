@@ -1,0 +1,55 @@
+#include "core/particles.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "io/expression.hpp"
+
+namespace arksph {
+
+ParticleSet make_lattice(const Scene& scene) {
+  ParticleSet ps;
+  ps.dim = scene.dimension;
+  ps.dx = scene.spacing;
+  long count[2] = {1, 1};
+  for (int k = 0; k < ps.dim; ++k)
+    count[k] = std::lround((scene.max[k] - scene.min[k]) / scene.spacing);
+  ps.n = static_cast<std::size_t>(count[0] * count[1]);
+
+  std::vector<Expression> where;
+  for (const auto& ph : scene.phases) where.emplace_back(ph.where, std::vector<std::string>{"x", "y"});
+  std::vector<Expression> vel;
+  for (int k = 0; k < ps.dim; ++k)
+    vel.emplace_back(scene.initial_velocity.at(k), std::vector<std::string>{"x", "y"});
+
+  const double cell_volume = std::pow(scene.spacing, ps.dim);
+  for (int k = 0; k < ps.dim; ++k) {
+    ps.init_pos[k].reserve(ps.n);
+    ps.init_vel[k].reserve(ps.n);
+  }
+  std::int64_t next_id = 0;
+  for (long j = 0; j < count[1]; ++j) {
+    for (long i = 0; i < count[0]; ++i) {
+      const double x = scene.min[0] + (static_cast<double>(i) + 0.5) * scene.spacing;
+      const double y = ps.dim == 2 ? scene.min[1] + (static_cast<double>(j) + 0.5) * scene.spacing : 0.0;
+      std::int32_t phase = 0;
+      double rho = scene.density;
+      for (std::size_t p = 0; p < where.size(); ++p) {
+        if (where[p].eval(x, y, 0.0) != 0.0) {
+          phase = static_cast<std::int32_t>(p + 1);
+          rho = scene.phases[p].density;
+        }
+      }
+      ps.init_pos[0].push_back(x);
+      if (ps.dim == 2) ps.init_pos[1].push_back(y);
+      for (int k = 0; k < ps.dim; ++k) ps.init_vel[k].push_back(vel[k].eval(x, y, 0.0));
+      ps.mass.push_back(rho * cell_volume);
+      ps.rho0.push_back(rho);
+      ps.id.push_back(next_id++);
+      ps.phase.push_back(phase);
+    }
+  }
+  return ps;
+}
+
+}  // namespace arksph

@@ -1,0 +1,161 @@
+#include "integrate/erk_integrator.hpp"
+
+#include <arkode/arkode_butcher_erk.h>
+#include <arkode/arkode_erkstep.h>
+#include <nvector/nvector_serial.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+
+namespace arksph {
+
+namespace {
+constexpr const char* kForwardEuler = "ARKSPH_FORWARD_EULER_1_1";
+
+// Loads a table by name; the caller frees it. Forward Euler is ours: ARKODE 6.4 has none.
+ARKodeButcherTable load_table(const std::string& name) {
+  if (name == kForwardEuler) {
+    const sunrealtype c[1] = {0}, A[1] = {0}, b[1] = {1};
+    return ARKodeButcherTable_Create(1, 1, 0, const_cast<sunrealtype*>(c), const_cast<sunrealtype*>(A),
+                                     const_cast<sunrealtype*>(b), nullptr);
+  }
+  return ARKodeButcherTable_LoadERKByName(name.c_str());
+}
+
+int check(int flag, const char* call) {
+  if (flag < 0) throw NumericalFailure(std::string("ARKODE: ") + call + " failed with flag " + std::to_string(flag));
+  return flag;
+}
+}  // namespace
+
+std::vector<std::string> erk_table_names() {
+  std::vector<std::string> names = {kForwardEuler};
+  const char* builtin[] = {"ARKODE_HEUN_EULER_2_1_2",       "ARKODE_BOGACKI_SHAMPINE_4_2_3",
+                           "ARKODE_ARK324L2SA_ERK_4_2_3",   "ARKODE_ZONNEVELD_5_3_4",
+                           "ARKODE_ARK436L2SA_ERK_6_3_4",   "ARKODE_SAYFY_ABURUB_6_3_4",
+                           "ARKODE_CASH_KARP_6_4_5",        "ARKODE_FEHLBERG_6_4_5",
+                           "ARKODE_DORMAND_PRINCE_7_4_5",   "ARKODE_ARK548L2SA_ERK_8_4_5",
+                           "ARKODE_VERNER_8_5_6",           "ARKODE_FEHLBERG_13_7_8",
+                           "ARKODE_KNOTH_WOLKE_3_3",        "ARKODE_ARK437L2SA_ERK_7_3_4",
+                           "ARKODE_ARK548L2SAb_ERK_8_4_5"};
+  for (const char* b : builtin) names.emplace_back(b);
+  return names;
+}
+
+bool erk_table_has_fsal_bug(const std::string& name) {
+  ARKodeButcherTable B = load_table(name);
+  if (!B) return false;
+  const int s = B->stages;
+  bool bug = false;
+  if (std::abs(B->c[s - 1] - 1.0) < 1e-14) {
+    for (int j = 0; j < s; ++j)
+      if (B->A[s - 1][j] != B->b[j]) bug = true;
+  }
+  ARKodeButcherTable_Free(B);
+  return bug;
+}
+
+bool erk_table_has_embedding(const std::string& name) {
+  ARKodeButcherTable B = load_table(name);
+  const bool emb = B && B->d != nullptr;
+  if (B) ARKodeButcherTable_Free(B);
+  return emb;
+}
+
+int erk_table_order(const std::string& name) {
+  ARKodeButcherTable B = load_table(name);
+  const int q = B ? B->q : 0;
+  if (B) ARKodeButcherTable_Free(B);
+  return q;
+}
+
+ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt)
+    : f_(std::move(f)), stab_(opt.stability), n_(y0.size()), t_(t0) {
+  check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
+  y_ = N_VNew_Serial(static_cast<sunindextype>(n_), ctx_);
+  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
+  mem_ = ERKStepCreate(&ErkIntegrator::rhs_cb, t0, y_, ctx_);
+  if (!mem_) throw NumericalFailure("ARKODE: ERKStepCreate failed");
+  check(ERKStepSetUserData(mem_, this), "ERKStepSetUserData");
+  ARKodeButcherTable B = load_table(opt.table);
+  if (!B) throw InputError("unknown ARKODE table '" + opt.table + "'");
+  const int flag = ERKStepSetTable(mem_, B);
+  ARKodeButcherTable_Free(B);
+  check(flag, "ERKStepSetTable");
+  if (opt.apply_fsal_workaround && erk_table_has_fsal_bug(opt.table)) {
+    check(ERKStepSetPostprocessStepFn(mem_, [](sunrealtype, N_Vector, void*) { return 0; }),
+          "ERKStepSetPostprocessStepFn");
+    workaround_ = true;
+  }
+  check(ERKStepSetMaxNumSteps(mem_, opt.max_steps), "ERKStepSetMaxNumSteps");
+  if (opt.fixed_dt > 0) {
+    check(ERKStepSetFixedStep(mem_, opt.fixed_dt), "ERKStepSetFixedStep");
+  } else {
+    check(ERKStepSStolerances(mem_, opt.rtol, opt.atol), "ERKStepSStolerances");
+    if (stab_) {
+      check(ERKStepSetStabilityFn(mem_, &ErkIntegrator::stab_cb, this), "ERKStepSetStabilityFn");
+      // h <= cfl_fraction * hstab; the callback returns limit / 0.99 so that h <= limit exactly.
+      check(ERKStepSetCFLFraction(mem_, 0.99), "ERKStepSetCFLFraction");
+      check(ERKStepSetFixedStepBounds(mem_, 1.0, 1.0), "ERKStepSetFixedStepBounds");
+    }
+    if (opt.initial_dt > 0) check(ERKStepSetInitStep(mem_, opt.initial_dt), "ERKStepSetInitStep");
+  }
+}
+
+ErkIntegrator::~ErkIntegrator() {
+  if (mem_) ERKStepFree(&mem_);
+  if (y_) N_VDestroy(y_);
+  if (ctx_) SUNContext_Free(&ctx_);
+}
+
+int ErkIntegrator::rhs_cb(double t, N_Vector y, N_Vector ydot, void* self) {
+  auto* me = static_cast<ErkIntegrator*>(self);
+  me->f_(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  const double* d = N_VGetArrayPointer(ydot);
+  for (std::size_t i = 0; i < me->n_; ++i)
+    if (!std::isfinite(d[i])) return 1;  // recoverable: ARKODE retries with a smaller step
+  return 0;
+}
+
+int ErkIntegrator::stab_cb(N_Vector y, double t, double* hstab, void* self) {
+  auto* me = static_cast<ErkIntegrator*>(self);
+  *hstab = me->stab_(t, N_VGetArrayPointer(y)) / 0.99;
+  return 0;
+}
+
+double ErkIntegrator::evolve_to(double tout) {
+  check(ERKStepSetStopTime(mem_, tout), "ERKStepSetStopTime");
+  const int flag = ERKStepEvolve(mem_, tout, y_, &t_, ARK_NORMAL);
+  if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
+                                       " with flag " + std::to_string(flag) + " (" +
+                                       ERKStepGetReturnFlagName(flag) + ")");
+  return t_;
+}
+
+double ErkIntegrator::step(double tstop) {
+  check(ERKStepSetStopTime(mem_, tstop), "ERKStepSetStopTime");
+  const int flag = ERKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP);
+  if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
+                                       " with flag " + std::to_string(flag) + " (" +
+                                       ERKStepGetReturnFlagName(flag) + ")");
+  return t_;
+}
+
+double* ErkIntegrator::state() { return N_VGetArrayPointer(y_); }
+
+ErkStats ErkIntegrator::stats() const {
+  ErkStats s;
+  long nst = 0, nacc = 0, natt = 0, nfe = 0, netf = 0;
+  ERKStepGetTimestepperStats(mem_, &nacc, &nst, &natt, &nfe, &netf);
+  ERKStepGetNumSteps(mem_, &nst);
+  s.steps = nst;
+  s.rhs_evals = nfe;
+  s.attempts = natt;
+  s.error_test_fails = netf;
+  ERKStepGetLastStep(mem_, &s.last_step);
+  return s;
+}
+
+}  // namespace arksph

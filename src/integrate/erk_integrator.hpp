@@ -1,0 +1,74 @@
+// RAII wrapper of SUNDIALS 6.4 ERKStep: explicit Runge-Kutta with a Butcher table chosen by name.
+//
+// SUNDIALS 6.4.1 bug (fixed in 6.7.0): ERKStep treats every table whose last node is c_s = 1 as
+// "first same as last" and reuses the last stage's RHS as f(y_{n+1}), which is wrong unless the
+// last row of A equals b. That lowers the order (ARK324 measures 2.0). Installing a post-process
+// step function, even one that does nothing, forces ERKStep to recompute f(y_{n+1}). We install it
+// exactly for the affected tables (c_s = 1 and A[s-1] != b): one extra RHS per step.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_nvector.h>
+
+namespace arksph {
+
+using RhsFunction = std::function<void(double t, const double* y, double* ydot)>;
+// Returns the largest stable step at state y (adaptive mode only).
+using StabilityFunction = std::function<double(double t, const double* y)>;
+
+struct ErkOptions {
+  std::string table = "ARKODE_HEUN_EULER_2_1_2";
+  double fixed_dt = 0;  // > 0: fixed step; 0: adaptive
+  double rtol = 1e-4, atol = 1e-8;
+  long max_steps = 100000000;
+  StabilityFunction stability;  // adaptive mode: h <= stability(t, y)
+  double initial_dt = 0;        // adaptive mode: first step (ERKStep does not apply the stability fn to it)
+  bool apply_fsal_workaround = true;
+};
+
+struct ErkStats {
+  long steps = 0, rhs_evals = 0, attempts = 0, error_test_fails = 0;
+  double last_step = 0;
+};
+
+// Table names accepted by ErkIntegrator: SUNDIALS' built-in ERK tables plus ARKSPH_FORWARD_EULER_1_1.
+std::vector<std::string> erk_table_names();
+// True when the table triggers the 6.4.1 FSAL bug (c_s = 1 but not first-same-as-last).
+bool erk_table_has_fsal_bug(const std::string& name);
+// True when the table has an embedding (adaptive stepping possible).
+bool erk_table_has_embedding(const std::string& name);
+int erk_table_order(const std::string& name);
+
+class ErkIntegrator {
+ public:
+  ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt);
+  ~ErkIntegrator();
+  ErkIntegrator(const ErkIntegrator&) = delete;
+  ErkIntegrator& operator=(const ErkIntegrator&) = delete;
+
+  // Advances to tout exactly (stop time). Returns the reached time; throws NumericalFailure on error.
+  double evolve_to(double tout);
+  // One internal step, not past tstop.
+  double step(double tstop);
+  double* state();
+  std::size_t size() const { return n_; }
+  ErkStats stats() const;
+  bool workaround_installed() const { return workaround_; }
+
+ private:
+  static int rhs_cb(double t, N_Vector y, N_Vector ydot, void* self);
+  static int stab_cb(N_Vector y, double t, double* hstab, void* self);
+  RhsFunction f_;
+  StabilityFunction stab_;
+  SUNContext ctx_ = nullptr;
+  N_Vector y_ = nullptr;
+  void* mem_ = nullptr;
+  std::size_t n_;
+  double t_;
+  bool workaround_ = false;
+};
+
+}  // namespace arksph

@@ -1,0 +1,41 @@
+// The one table of per-particle output fields (STYLE.md #11): it drives the VTP writer and the
+// documentation (`output_fields_markdown()`), so a field is described exactly once.
+#pragma once
+#include <array>
+#include <string>
+
+namespace arksph {
+
+// Which field an entry describes; writers switch on it (-Wswitch flags a field left unhandled).
+enum class FieldId { velocity, pressure, density, mass, id, phase };
+
+// Storage type of the written array (VTK XML type names).
+enum class FieldType { Float64, Int64, Int32 };
+
+struct OutputField {
+  FieldId field;
+  const char* name;         // array name in the VTP file
+  int components;           // 1 or 3
+  FieldType type;
+  const char* unit;         // SI; "-" for dimensionless labels
+  const char* description;  // one line, for the docs
+};
+
+// Point-data arrays written into every VTP frame (INTERFACE.md "Point data in every VTP").
+inline constexpr std::array<OutputField, 6> kOutputFields{{
+    {FieldId::velocity, "velocity", 3, FieldType::Float64, "m/s", "particle velocity (u, v, 0); 1D: (u, 0, 0)"},
+    {FieldId::pressure, "pressure", 1, FieldType::Float64, "Pa", "pressure"},
+    {FieldId::density, "density", 1, FieldType::Float64, "kg/m^3", "density"},
+    {FieldId::mass, "mass", 1, FieldType::Float64, "kg/m^(3-d)",
+     "particle mass (per unit depth in 2D, per unit area in 1D)"},
+    {FieldId::id, "id", 1, FieldType::Int64, "-", "particle id, stable across frames"},
+    {FieldId::phase, "phase", 1, FieldType::Int32, "-", "phase index of the particle"},
+}};
+
+// "Float64", "Int64" or "Int32".
+const char* field_type_name(FieldType t);
+
+// The table as a markdown table (name, components, type, unit, description).
+std::string output_fields_markdown();
+
+}  // namespace arksph

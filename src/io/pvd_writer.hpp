@@ -1,0 +1,34 @@
+// The ParaView time collection (.pvd) of the VTP frames. VTK has no writer for it, so the
+// Collection XML is written by hand; it is rewritten atomically after every frame, so the file
+// is valid (and lists every frame written so far) even if the run dies.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace arksph {
+
+class PvdCollection {
+ public:
+  // The collection lives at dir/name; frame file names are relative to dir. Nothing is written
+  // until the first add().
+  explicit PvdCollection(std::string dir, std::string name = "particles.pvd");
+
+  // Appends a frame and rewrites the collection. Throws std::runtime_error("cannot write ...").
+  void add(double time, const std::string& vtp_filename);
+
+  // Rewrites the collection as it stands (also valid with no frame).
+  void write() const;
+
+  const std::string& path() const { return path_; }
+  std::size_t size() const { return frames_.size(); }
+
+ private:
+  struct Entry {
+    double time;
+    std::string file;
+  };
+  std::string path_;
+  std::vector<Entry> frames_;
+};
+
+}  // namespace arksph

@@ -1,0 +1,129 @@
+// JSON serialisation for summary.json.
+#include "io/summary_json.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "io/csv_writer.hpp"  // write_text_atomic
+
+namespace arksph {
+
+Json::Json(const std::vector<std::string>& items) : kind_(Kind::array) {
+  for (const auto& s : items) items_.emplace_back(s);
+}
+
+Json::Json(const std::vector<double>& items) : kind_(Kind::array) {
+  for (double x : items) items_.emplace_back(x);
+}
+
+Json Json::object() {
+  Json j;
+  j.kind_ = Kind::object;
+  return j;
+}
+
+Json Json::array() {
+  Json j;
+  j.kind_ = Kind::array;
+  return j;
+}
+
+Json& Json::set(const std::string& key, Json value) {
+  (*this)[key] = std::move(value);
+  return *this;
+}
+
+Json& Json::operator[](const std::string& key) {
+  if (kind_ == Kind::null) kind_ = Kind::object;
+  if (kind_ != Kind::object) throw std::logic_error("Json: key '" + key + "' on a non-object");
+  for (std::size_t i = 0; i < keys_.size(); ++i)
+    if (keys_[i] == key) return items_[i];
+  keys_.push_back(key);
+  items_.emplace_back();
+  return items_.back();
+}
+
+Json& Json::push(Json value) {
+  if (kind_ == Kind::null) kind_ = Kind::array;
+  if (kind_ != Kind::array) throw std::logic_error("Json: push on a non-array");
+  items_.push_back(std::move(value));
+  return *this;
+}
+
+const Json* Json::find(const std::string& key) const {
+  for (std::size_t i = 0; i < keys_.size(); ++i)
+    if (keys_[i] == key) return &items_[i];
+  return nullptr;
+}
+
+std::string json_quote(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\b': out += "\\b"; break;
+      case '\f': out += "\\f"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (c < 0x20) {  // other control characters: \u00XX
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += static_cast<char>(c);  // UTF-8 bytes pass through unchanged
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  // std::to_chars: shortest round-trip form, independent of the C locale (never a decimal comma).
+  char buf[32];
+  auto res = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, res.ptr);
+}
+
+void Json::dump_to(std::string& out, int indent, int depth) const {
+  const bool pretty = indent > 0;
+  auto newline = [&](int d) {
+    if (pretty) out += "\n" + std::string(static_cast<std::size_t>(indent * d), ' ');
+  };
+  switch (kind_) {
+    case Kind::null: out += "null"; return;
+    case Kind::boolean: out += bool_ ? "true" : "false"; return;
+    case Kind::integer: out += std::to_string(int_); return;
+    case Kind::number: out += json_number(num_); return;
+    case Kind::string: out += json_quote(str_); return;
+    case Kind::array:
+    case Kind::object: {
+      const bool obj = kind_ == Kind::object;
+      out += obj ? '{' : '[';
+      for (std::size_t i = 0; i < items_.size(); ++i) {
+        if (i) out += ',';
+        newline(depth + 1);
+        if (obj) out += json_quote(keys_[i]) + (pretty ? ": " : ":");
+        items_[i].dump_to(out, indent, depth + 1);
+      }
+      if (!items_.empty()) newline(depth);
+      out += obj ? '}' : ']';
+      return;
+    }
+  }
+}
+
+std::string Json::dump(int indent) const {
+  std::string out;
+  dump_to(out, indent, 0);
+  return out;
+}
+
+void write_json_atomic(const std::string& path, const Json& json) { write_text_atomic(path, json.dump() + "\n"); }
+
+}  // namespace arksph

@@ -1,0 +1,37 @@
+// Quartic B-spline, support 2.5h. Cummins & Rudman 1999 eq. 6.
+//   f(q) = (2.5-q)^4 - 5 (1.5-q)^4 + 10 (0.5-q)^4   (0 <= q < 0.5)
+//          (2.5-q)^4 - 5 (1.5-q)^4                  (0.5 <= q < 1.5)
+//          (2.5-q)^4                                (1.5 <= q < 2.5)
+// The paper prints the 2D constant as 0.0255; the exact value is 96 / (1199 pi) = 0.025486...
+// The 1D constant is 1/24 (the integral of the bracket over the real line is 24).
+#include <numbers>
+
+#include "kernels/kernel_shapes.hpp"
+
+namespace arksph {
+
+struct QuarticSpline final : KernelShape {
+  double support() const override { return 2.5; }
+  double sigma(int d) const override { return d == 1 ? 1.0 / 24.0 : 96.0 / (1199.0 * std::numbers::pi); }
+  void eval(double q, double& f, double& df) const override {
+    f = df = 0.0;
+    if (q >= 2.5) return;
+    const double a = 2.5 - q;
+    f += a * a * a * a;
+    df -= 4.0 * a * a * a;
+    if (q < 1.5) {
+      const double b = 1.5 - q;
+      f -= 5.0 * b * b * b * b;
+      df += 20.0 * b * b * b;
+    }
+    if (q < 0.5) {
+      const double c = 0.5 - q;
+      f += 10.0 * c * c * c * c;
+      df -= 40.0 * c * c * c;
+    }
+  }
+};
+
+std::shared_ptr<const KernelShape> make_quartic_spline() { return std::make_shared<QuarticSpline>(); }
+
+}  // namespace arksph

@@ -1,0 +1,31 @@
+// Quintic B-spline of Morris et al., support 3h. Szewc et al. 2012 eq. 7.
+//   f(q) = (3-q)^5 - 6 (2-q)^5 + 15 (1-q)^5  (0 <= q < 1)
+//          (3-q)^5 - 6 (2-q)^5               (1 <= q < 2)
+//          (3-q)^5                           (2 <= q < 3)
+// 2D constant 7 / (478 pi) (Szewc eq. 7); 1D constant 1/120.
+#include <numbers>
+
+#include "kernels/kernel_shapes.hpp"
+
+namespace arksph {
+
+struct QuinticSpline final : KernelShape {
+  double support() const override { return 3.0; }
+  double sigma(int d) const override { return d == 1 ? 1.0 / 120.0 : 7.0 / (478.0 * std::numbers::pi); }
+  void eval(double q, double& f, double& df) const override {
+    f = df = 0.0;
+    if (q >= 3.0) return;
+    auto add = [&](double c, double s) {  // c * s^5 and its q-derivative -5 c s^4
+      const double s2 = s * s, s4 = s2 * s2;
+      f += c * s4 * s;
+      df -= 5.0 * c * s4;
+    };
+    add(1.0, 3.0 - q);
+    if (q < 2.0) add(-6.0, 2.0 - q);
+    if (q < 1.0) add(15.0, 1.0 - q);
+  }
+};
+
+std::shared_ptr<const KernelShape> make_quintic_spline() { return std::make_shared<QuinticSpline>(); }
+
+}  // namespace arksph

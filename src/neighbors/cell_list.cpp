@@ -1,0 +1,91 @@
+#include "neighbors/cell_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "kernels/kernel.hpp"
+
+namespace arksph {
+
+void CellList::build(const double* x, const double* y, std::size_t n, double radius) {
+  x_ = x;
+  y_ = y;
+  r2_ = radius * radius;
+  double xmin = std::numeric_limits<double>::max(), xmax = -xmin, ymin = 0, ymax = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    xmin = std::min(xmin, x[i]);
+    xmax = std::max(xmax, x[i]);
+  }
+  if (y) {
+    ymin = std::numeric_limits<double>::max();
+    ymax = -ymin;
+    for (std::size_t i = 0; i < n; ++i) {
+      ymin = std::min(ymin, y[i]);
+      ymax = std::max(ymax, y[i]);
+    }
+  }
+  if (n == 0) xmin = xmax = 0;
+  inv_side_ = 1.0 / radius;
+  x0_ = xmin;
+  y0_ = ymin;
+  nx_ = static_cast<long>((xmax - xmin) * inv_side_) + 1;
+  ny_ = y ? static_cast<long>((ymax - ymin) * inv_side_) + 1 : 1;
+  const std::size_t ncell = static_cast<std::size_t>(nx_ * ny_);
+  start_.assign(ncell + 1, 0);
+  std::vector<std::uint32_t> cell(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const long c = (y ? cell_coord(y[i], y0_) * nx_ : 0) + cell_coord(x[i], x0_);
+    cell[i] = static_cast<std::uint32_t>(c);
+    ++start_[c + 1];
+  }
+  for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  order_.resize(n);
+  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order_[fill[cell[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, const double* y,
+                 std::size_t n_real, PairList& pairs) {
+  pairs.n_real = n_real;
+  pairs.count.assign(n_real, 0);
+  if (pairs.stride == 0) pairs.stride = 16;
+  for (;;) {
+    const std::size_t cap = n_real * pairs.stride;
+    if (pairs.j.size() < cap) {
+      pairs.j.resize(cap);
+      pairs.rx.resize(cap);
+      pairs.ry.resize(cap);
+      pairs.r2.resize(cap);
+      pairs.w.resize(cap);
+      pairs.f.resize(cap);
+    }
+    std::size_t overflow = 0;
+#pragma omp parallel for schedule(static) reduction(max : overflow)
+    for (std::size_t a = 0; a < n_real; ++a) {
+      const std::size_t base = a * pairs.stride;
+      std::size_t k = 0;
+      cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double dx, double dy) {
+        if (b == a) return;
+        if (k < pairs.stride) {
+          const double r2 = dx * dx + dy * dy;
+          double w, f;
+          kernel.eval(std::sqrt(r2), w, f);
+          pairs.j[base + k] = b;
+          pairs.rx[base + k] = dx;
+          pairs.ry[base + k] = dy;
+          pairs.r2[base + k] = r2;
+          pairs.w[base + k] = w;
+          pairs.f[base + k] = f;
+        }
+        ++k;
+      });
+      pairs.count[a] = static_cast<std::uint32_t>(std::min(k, pairs.stride));
+      overflow = std::max(overflow, k);
+    }
+    if (overflow <= pairs.stride) return;
+    pairs.stride = overflow + overflow / 4 + 4;  // grow and redo: rare, only when crowding rises
+  }
+}
+
+}  // namespace arksph

@@ -1,0 +1,31 @@
+// Tait equation of state, Cummins & Rudman 1999 eq. 7 (Szewc et al. 2012 eq. 26):
+//   p = c^2 rho0 / gamma * ((rho / rho0)^gamma - 1),  rho0 the reference density of the phase.
+#include <cmath>
+
+#include "rhs/terms.hpp"
+
+namespace arksph {
+
+class EquationOfStateTait final : public Term {
+ public:
+  EquationOfStateTait(double sound_speed, double gamma) : c2_(sound_speed * sound_speed), gamma_(gamma) {}
+  std::string name() const override { return "eos:tait"; }
+  Stage stage() const override { return Stage::pressure; }
+  void apply(FluidFields& f) const override {
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < f.n_real; ++a) {
+      const double ratio = f.rho[a] / f.rho0[a];
+      const double stiffness = c2_ * f.rho0[a] / gamma_;
+      f.p[a] = stiffness * (std::pow(ratio, gamma_) - 1.0);
+    }
+  }
+
+ private:
+  double c2_, gamma_;
+};
+
+std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma) {
+  return std::make_unique<EquationOfStateTait>(sound_speed, gamma);
+}
+
+}  // namespace arksph

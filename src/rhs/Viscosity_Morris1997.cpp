@@ -1,0 +1,32 @@
+// Viscosity of Morris et al. 1997, model E of Basa et al. 2008 (eq. 35):
+//   (1/rho div tau)_a = sum_b m_b (mu_a + mu_b) / (rho_a rho_b) (r_ab . grad_a W_ab) / r_ab^2 u_ab,
+// with mu = rho nu. Since grad_a W_ab = F r_ab, (r_ab . grad_a W_ab) / r_ab^2 = F.
+#include "rhs/terms.hpp"
+
+namespace arksph {
+
+class ViscosityMorris final : public Term {
+ public:
+  std::string name() const override { return "viscosity:morris"; }
+  Stage stage() const override { return Stage::force; }
+  void apply(FluidFields& f) const override {
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < f.n_real; ++a) {
+      double ax = 0.0, ay = 0.0;
+      const double mu_a = f.rho[a] * f.nu[a], rho_a = f.rho[a];
+      const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
+      f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double, double, double F) {
+        const double mu_sum = mu_a + f.rho[b] * f.nu[b];
+        const double coeff = f.m[b] * mu_sum / (rho_a * f.rho[b]) * F;
+        ax += coeff * (ua - f.u[b]);
+        if (f.dim == 2) ay += coeff * (va - f.v[b]);
+      });
+      f.dudt[a] += ax;
+      if (f.dim == 2) f.dvdt[a] += ay;
+    }
+  }
+};
+
+std::unique_ptr<Term> make_viscosity_morris() { return std::make_unique<ViscosityMorris>(); }
+
+}  // namespace arksph

@@ -1,0 +1,157 @@
+#include "rhs/evaluator.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace arksph {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Kernel kernel,
+                           std::vector<std::unique_ptr<Term>> terms)
+    : particles_(particles),
+      kernel_(std::move(kernel)),
+      terms_(std::move(terms)),
+      ghost_builder_(scene, kernel_.radius()),
+      nu_(scene.viscosity) {
+  layout_.n = particles.n;
+  layout_.dim = particles.dim;
+  layout_.has_density = scene.scheme == "wcsph" && scene.density_mode == "continuity";
+  std::stable_sort(terms_.begin(), terms_.end(),
+                   [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
+  fields_.dim = particles.dim;
+  fields_.n_real = particles.n;
+  fields_.kernel = &kernel_;
+  fields_.rho0 = particles.rho0;
+  const std::size_t n = particles.n;
+  fields_.dudt.assign(n, 0.0);
+  fields_.dvdt.assign(n, 0.0);
+  fields_.drhodt.assign(n, 0.0);
+}
+
+std::vector<std::string> RhsEvaluator::term_names() const {
+  std::vector<std::string> names;
+  for (const auto& t : terms_) names.push_back(t->name());
+  return names;
+}
+
+void RhsEvaluator::initial_state(double* y) const {
+  const std::size_t n = layout_.n;
+  for (int k = 0; k < layout_.dim; ++k) {
+    std::copy(particles_.init_pos[k].begin(), particles_.init_pos[k].end(), y + layout_.pos(k));
+    std::copy(particles_.init_vel[k].begin(), particles_.init_vel[k].end(), y + layout_.vel(k));
+  }
+  if (layout_.has_density) std::copy(particles_.rho0.begin(), particles_.rho0.begin() + n, y + layout_.rho());
+}
+
+void RhsEvaluator::load_state(double t, const double* y) {
+  FluidFields& f = fields_;
+  const std::size_t n = layout_.n;
+  f.t = t;
+  // Positions and velocities of real particles; ghosts are appended afterwards.
+  f.x.assign(y + layout_.pos(0), y + layout_.pos(0) + n);
+  f.u.assign(y + layout_.vel(0), y + layout_.vel(0) + n);
+  if (layout_.dim == 2) {
+    f.y.assign(y + layout_.pos(1), y + layout_.pos(1) + n);
+    f.v.assign(y + layout_.vel(1), y + layout_.vel(1) + n);
+  }
+  f.m.assign(particles_.mass.begin(), particles_.mass.end());
+  if (layout_.has_density)
+    f.rho.assign(y + layout_.rho(), y + layout_.rho() + n);
+  else
+    f.rho.assign(particles_.rho0.begin(), particles_.rho0.end());  // replaced by summation if enabled
+  f.p.assign(n, 0.0);
+}
+
+void RhsEvaluator::refresh_ghosts() {
+  FluidFields& f = fields_;
+  const std::size_t n = layout_.n;
+  const bool two_d = layout_.dim == 2;
+  ghost_builder_.build(f.x.data(), two_d ? f.y.data() : nullptr, n, ghosts_);
+  const std::size_t ng = ghosts_.size();
+  f.n_all = n + ng;
+  f.x.insert(f.x.end(), ghosts_.x.begin(), ghosts_.x.end());
+  if (two_d) f.y.insert(f.y.end(), ghosts_.y.begin(), ghosts_.y.end());
+  f.u.resize(f.n_all);
+  f.v.resize(two_d ? f.n_all : 0);
+  f.ud.resize(f.n_all);
+  f.vd.resize(two_d ? f.n_all : 0);
+  std::copy(f.u.begin(), f.u.begin() + n, f.ud.begin());
+  if (two_d) std::copy(f.v.begin(), f.v.begin() + n, f.vd.begin());
+  f.m.resize(f.n_all);
+  for (std::size_t g = 0; g < ng; ++g) {
+    const std::size_t i = n + g, s = ghosts_.source[g];
+    const auto& mv = ghosts_.map[g];
+    const auto& md = ghosts_.div_map[g];
+    const double us = f.u[s], vs = two_d ? f.v[s] : 0.0;
+    f.u[i] = mv[0] * us + mv[2];
+    f.ud[i] = md[0] * us + md[2];
+    if (two_d) {
+      f.v[i] = mv[1] * vs + mv[3];
+      f.vd[i] = md[1] * vs + md[3];
+    }
+    f.m[i] = f.m[s];
+  }
+  f.nu.assign(f.n_all, nu_);
+}
+
+void RhsEvaluator::copy_to_ghosts(std::vector<double>& field) {
+  const std::size_t n = layout_.n;
+  field.resize(fields_.n_all);
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) field[n + g] = field[ghosts_.source[g]];
+}
+
+void RhsEvaluator::eval(double t, const double* y, double* ydot) {
+  using clock = std::chrono::steady_clock;
+  FluidFields& f = fields_;
+  const std::size_t n = layout_.n;
+  const bool two_d = layout_.dim == 2;
+  ++evals_;
+
+  auto t0 = clock::now();
+  load_state(t, y);
+  refresh_ghosts();
+  cells_.build(f.x.data(), two_d ? f.y.data() : nullptr, f.n_all, kernel_.radius());
+  build_pairs(cells_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, n, f.pairs);
+  timing_.neighbors += seconds_since(t0);
+
+  t0 = clock::now();
+  std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
+  std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
+  std::fill(f.drhodt.begin(), f.drhodt.end(), 0.0);
+  copy_to_ghosts(f.rho);
+  copy_to_ghosts(f.p);
+  Term::Stage done = Term::Stage::density;
+  for (const auto& term : terms_) {
+    if (term->stage() != done) {  // entering a later stage: ghosts take their sources' new values
+      copy_to_ghosts(f.rho);
+      copy_to_ghosts(f.p);
+      done = term->stage();
+    }
+    term->apply(f);
+  }
+  copy_to_ghosts(f.rho);
+  copy_to_ghosts(f.p);
+
+  double amax = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    amax = std::max(amax, std::hypot(f.dudt[a], two_d ? f.dvdt[a] : 0.0));
+  max_accel_ = amax;
+
+  if (ydot) {
+    for (int k = 0; k < layout_.dim; ++k) {
+      std::copy(y + layout_.vel(k), y + layout_.vel(k) + n, ydot + layout_.pos(k));
+    }
+    std::copy(f.dudt.begin(), f.dudt.end(), ydot + layout_.vel(0));
+    if (two_d) std::copy(f.dvdt.begin(), f.dvdt.end(), ydot + layout_.vel(1));
+    if (layout_.has_density) std::copy(f.drhodt.begin(), f.drhodt.end(), ydot + layout_.rho());
+  }
+  timing_.terms += seconds_since(t0);
+}
+
+}  // namespace arksph

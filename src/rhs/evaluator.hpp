@@ -1,0 +1,60 @@
+// f(t, y) of the semi-discrete particle system: refreshes ghosts and neighbours at the positions in
+// y, runs the enabled terms in stage order and returns [u ; du/dt ; drho/dt] in the state layout.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "boundary/ghosts.hpp"
+#include "core/particles.hpp"
+#include "kernels/kernel.hpp"
+#include "neighbors/cell_list.hpp"
+#include "rhs/fluid_fields.hpp"
+#include "rhs/term.hpp"
+
+namespace arksph {
+
+struct RhsTiming {
+  double neighbors = 0;  // ghosts, cell list, pair list
+  double terms = 0;      // the physical terms
+};
+
+class RhsEvaluator {
+ public:
+  RhsEvaluator(const Scene& scene, const ParticleSet& particles, Kernel kernel,
+               std::vector<std::unique_ptr<Term>> terms);
+
+  const StateLayout& layout() const { return layout_; }
+  // Fills the initial state vector (size layout().size()).
+  void initial_state(double* y) const;
+  // ydot = f(t, y). Safe to call with ydot == nullptr to refresh fields only (diagnostics).
+  void eval(double t, const double* y, double* ydot);
+
+  const FluidFields& fields() const { return fields_; }
+  const Kernel& kernel() const { return kernel_; }
+  const ParticleSet& particles() const { return particles_; }
+  std::vector<std::string> term_names() const;
+  double max_acceleration() const { return max_accel_; }  // from the last eval, real particles
+  long evaluations() const { return evals_; }
+  const RhsTiming& timing() const { return timing_; }
+
+ private:
+  void load_state(double t, const double* y);
+  void refresh_ghosts();
+  void copy_to_ghosts(std::vector<double>& field);
+
+  StateLayout layout_;
+  ParticleSet particles_;
+  Kernel kernel_;
+  std::vector<std::unique_ptr<Term>> terms_;
+  GhostBuilder ghost_builder_;
+  GhostSet ghosts_;
+  CellList cells_;
+  FluidFields fields_;
+  double nu_;
+  double max_accel_ = 0;
+  long evals_ = 0;
+  RhsTiming timing_;
+};
+
+}  // namespace arksph

@@ -1,0 +1,34 @@
+// Factories of the right-hand-side terms (one file each) and the scene-driven assembly.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "rhs/term.hpp"
+
+namespace arksph {
+
+std::unique_ptr<Term> make_density_summation();
+std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma);
+std::unique_ptr<Term> make_continuity();
+std::unique_ptr<Term> make_pressure_gradient_colagrossi();
+std::unique_ptr<Term> make_pressure_gradient_monaghan();
+std::unique_ptr<Term> make_viscosity_morris();
+std::unique_ptr<Term> make_viscosity_monaghan();
+std::unique_ptr<Term> make_body_force(const std::vector<std::string>& expr);
+
+// Names by family for validation and `arksph list`.
+std::vector<std::string> viscosity_model_names();
+std::vector<std::string> pressure_gradient_names();
+
+// The terms a scene needs, and nothing else: no body force when it is zero, no viscosity when
+// nu = 0, no equation of state or pressure gradient unless the scheme is wcsph, etc.
+// sound_speed is the resolved value (see resolve_sound_speed).
+std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double sound_speed);
+
+// The WCSPH sound speed: the scene's value, or 10 x the reference speed U = max(wall speeds,
+// initial speeds, sqrt(|f| L)) with L the largest box length (Szewc §4.1: c >= 10 |u|max).
+double resolve_sound_speed(const Scene& scene, double max_initial_speed);
+
+}  // namespace arksph

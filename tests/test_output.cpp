@@ -322,3 +322,22 @@ TEST_CASE("output: writing into a missing or unusable directory throws and leave
   }
   CHECK_FALSE(fs::exists(tmp / "missing"));
 }
+
+TEST_CASE("output: a full disk during the write throws and removes the temporary") {
+  if (!fs::exists("/dev/full")) return;
+  ScratchDir tmp("full");
+  const Particles P(20);
+  // The temporary is a symlink to /dev/full: opening works, every write fails with ENOSPC.
+  auto expect_enospc = [&](const std::string& path, auto&& write) {
+    CAPTURE(path);
+    fs::create_symlink("/dev/full", path + ".tmp");
+    CHECK_THROWS_WITH_AS(write(path), ("cannot write " + path + ": No space left on device").c_str(),
+                         std::runtime_error);
+    CHECK_FALSE(fs::exists(path));
+    CHECK_FALSE(fs::is_symlink(path + ".tmp"));
+  };
+  expect_enospc(tmp / "f.vtp", [&](const std::string& p) { write_vtp(p, P.frame(2)); });
+  expect_enospc(tmp / "s.json", [&](const std::string& p) { write_json_atomic(p, Json::object()); });
+  CHECK_THROWS_WITH_AS(TimeseriesCsv("/dev/full", {"t"}), "cannot write /dev/full: No space left on device",
+                       std::runtime_error);
+}

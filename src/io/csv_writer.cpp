@@ -23,8 +23,11 @@ std::string csv_cell(const std::string& s) {
 
 std::string header_line(const std::vector<std::string>& columns) {
   std::string line;
-  for (std::size_t i = 0; i < columns.size(); ++i) line += (i ? "," : "") + csv_cell(columns[i]);
-  return line + "\n";
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i) line += ',';
+    line += csv_cell(columns[i]);
+  }
+  return line + '\n';
 }
 
 std::string values_line(const std::vector<double>& values, std::size_t ncols, const std::string& path) {
@@ -35,9 +38,10 @@ std::string values_line(const std::vector<double>& values, std::size_t ncols, co
   char buf[32];
   for (std::size_t i = 0; i < values.size(); ++i) {
     std::snprintf(buf, sizeof buf, "%.10g", values[i]);
-    line += (i ? "," : "") + std::string(buf);
+    if (i) line += ',';
+    line += buf;
   }
-  return line + "\n";
+  return line + '\n';
 }
 
 }  // namespace

@@ -45,8 +45,10 @@ std::string describe(const std::string& text, const mu::ParserError& e,
   return one_line("expression \"" + text + "\": " + reason);
 }
 
-std::unique_ptr<Expression::State> compile(const std::string& text,
-                                           const std::vector<std::string>& variables) {
+}  // namespace
+
+std::unique_ptr<Expression::State> Expression::compile(const std::string& text,
+                                                       const std::vector<std::string>& variables) {
   auto s = std::make_unique<Expression::State>();
   for (const auto& v : variables) {
     double* slot = v == "x" ? &s->x : v == "y" ? &s->y : v == "t" ? &s->t : nullptr;
@@ -67,8 +69,6 @@ std::unique_ptr<Expression::State> compile(const std::string& text,
   }
   return s;
 }
-
-}  // namespace
 
 Expression::Expression(const std::string& text, const std::vector<std::string>& variables)
     : text_(text), variables_(variables), state_(compile(text, variables)) {}

@@ -38,6 +38,8 @@ class Expression {
 
  private:
   struct State;  // muParser parser together with the variable storage it points to
+  static std::unique_ptr<State> compile(const std::string& text,
+                                        const std::vector<std::string>& variables);
   std::string text_;
   std::vector<std::string> variables_;
   std::unique_ptr<State> state_;

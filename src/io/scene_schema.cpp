@@ -30,11 +30,13 @@ std::string type_name(const toml::node& n) {
 
 // "got string \"abc\"", "got array": the type, and the value when it is short and scalar.
 std::string got(const toml::node& n) {
+  std::string value;
+  if (auto s = n.value_exact<std::string>()) value = '"' + *s + '"';
+  else if (auto i = n.value_exact<int64_t>()) value = std::to_string(*i);
+  else if (auto d = n.value_exact<double>()) value = format_number(*d);
+  else if (auto b = n.value_exact<bool>()) value = *b ? "true" : "false";
   std::string out = "got " + type_name(n);
-  if (auto s = n.value_exact<std::string>()) out += " \"" + *s + "\"";
-  else if (auto i = n.value_exact<int64_t>()) out += " " + std::to_string(*i);
-  else if (auto d = n.value_exact<double>()) out += " " + format_number(*d);
-  else if (auto b = n.value_exact<bool>()) out += *b ? " true" : " false";
+  if (!value.empty()) out.append(1, ' ').append(value);
   return out;
 }
 

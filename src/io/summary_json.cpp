@@ -93,7 +93,9 @@ std::string json_number(double x) {
 void Json::dump_to(std::string& out, int indent, int depth) const {
   const bool pretty = indent > 0;
   auto newline = [&](int d) {
-    if (pretty) out += "\n" + std::string(static_cast<std::size_t>(indent * d), ' ');
+    if (!pretty) return;
+    out += '\n';
+    out.append(static_cast<std::size_t>(indent * d), ' ');
   };
   switch (kind_) {
     case Kind::null: out += "null"; return;

@@ -6,6 +6,7 @@
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
+#include <vtkExecutive.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -115,14 +116,24 @@ vtkSmartPointer<vtkPolyData> make_polydata(const Frame& f) {
   return pd;
 }
 
-// Keeps the last VTK error message of the writer (instead of printing it to stderr).
+// Keeps the first VTK error message of the writer (instead of printing it to stderr).
 void capture_error(vtkObject*, unsigned long, void* client, void* call) {
-  std::string msg = call ? static_cast<const char*>(call) : "";
+  auto& kept = *static_cast<std::string*>(client);
+  if (!kept.empty() || !call) return;
+  std::string msg = static_cast<const char*>(call);
   // "ERROR: In file, line N\nvtkClass (0x..): text\n\n" -> "text"
   while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
   if (auto nl = msg.rfind('\n'); nl != std::string::npos) msg.erase(0, nl + 1);
   if (auto p = msg.find("): "); p != std::string::npos) msg.erase(0, p + 3);
-  *static_cast<std::string*>(client) = msg;
+  kept = msg.empty() ? "VTK error" : msg;
+}
+
+// The one-line reason of a failed Write(): VTK stores either an errno or one of its own codes.
+std::string failure_reason(unsigned long code, const std::string& vtk_error) {
+  if (code > 0 && code < vtkErrorCode::FirstVTKErrorCode) return std::strerror(static_cast<int>(code));
+  if (code == vtkErrorCode::OutOfDiskSpaceError) return "no space left on device";
+  if (!vtk_error.empty()) return vtk_error;
+  return "VTK writer error " + std::to_string(code);
 }
 
 }  // namespace
@@ -139,11 +150,15 @@ void write_vtp(const std::string& path, const Frame& f) {
   }
 
   vtkNew<vtkXMLPolyDataWriter> w;
-  std::string vtk_error;
-  vtkNew<vtkCallbackCommand> on_error;
+  // Route VTK's error messages (writer and its pipeline executive) to us instead of stderr.
+  std::string vtk_error, executive_error;
+  vtkNew<vtkCallbackCommand> on_error, on_executive_error;
   on_error->SetCallback(capture_error);
   on_error->SetClientData(&vtk_error);
+  on_executive_error->SetCallback(capture_error);
+  on_executive_error->SetClientData(&executive_error);
   w->AddObserver(vtkCommand::ErrorEvent, on_error);
+  w->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, on_executive_error);
 
   w->SetFileName(tmp.c_str());
   w->SetInputData(pd);
@@ -156,9 +171,7 @@ void write_vtp(const std::string& path, const Frame& f) {
   const unsigned long code = w->GetErrorCode();
   if (!ok || code != vtkErrorCode::NoError || !vtk_error.empty()) {
     std::remove(tmp.c_str());
-    std::string reason = !vtk_error.empty() ? vtk_error : vtkErrorCode::GetStringFromErrorCode(code);
-    if (code == vtkErrorCode::OutOfDiskSpaceError) reason = "out of disk space (" + reason + ")";
-    fail(path, reason.empty() ? "VTK writer failed" : reason);
+    fail(path, failure_reason(code, vtk_error));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;

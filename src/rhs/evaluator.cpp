@@ -19,6 +19,11 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       terms_(std::move(terms)),
       ghost_builder_(scene, kernel_.radius()),
       nu_(scene.viscosity) {
+  for (int k = 0; k < scene.dimension; ++k) {
+    periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
+    lo_[k] = scene.min[k];
+    len_[k] = scene.max[k] - scene.min[k];
+  }
   layout_.n = particles.n;
   layout_.dim = particles.dim;
   layout_.has_density = scene.scheme == "wcsph" && scene.density_mode == "continuity";
@@ -59,6 +64,16 @@ void RhsEvaluator::load_state(double t, const double* y) {
   if (layout_.dim == 2) {
     f.y.assign(y + layout_.pos(1), y + layout_.pos(1) + n);
     f.v.assign(y + layout_.vel(1), y + layout_.vel(1) + n);
+  }
+  // Periodic axes: positions in y may drift out of the box; the fields see them wrapped back in.
+  // f is invariant under the shift, so y itself is left alone (no integrator re-initialisation).
+  for (int k = 0; k < layout_.dim; ++k) {
+    if (!periodic_[k]) continue;
+    std::vector<double>& c = k == 0 ? f.x : f.y;
+    const double lo = lo_[k], len = len_[k];
+    for (double& v : c) {
+      if (v < lo || v >= lo + len) v = lo + (v - lo) - len * std::floor((v - lo) / len);
+    }
   }
   f.m.assign(particles_.mass.begin(), particles_.mass.end());
   if (layout_.has_density)

@@ -52,6 +52,8 @@ class RhsEvaluator {
   CellList cells_;
   FluidFields fields_;
   double nu_;
+  bool periodic_[2] = {false, false};
+  double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;
   long evals_ = 0;
   RhsTiming timing_;

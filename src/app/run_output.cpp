@@ -1,0 +1,138 @@
+#include "app/run_output.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include "core/errors.hpp"
+#include "diagnostics/ghia.hpp"
+#include "diagnostics/poiseuille.hpp"
+#include "io/expression.hpp"
+#include "io/vtp_writer.hpp"
+
+namespace arksph {
+
+namespace {
+using clock_type = std::chrono::steady_clock;
+double since(clock_type::time_point t0) {
+  return std::chrono::duration<double>(clock_type::now() - t0).count();
+}
+double lid_speed(const Scene& s) { return std::hypot(s.sides[3].velocity[0], s.sides[3].velocity[1]); }
+double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
+}  // namespace
+
+RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options)
+    : scene_(scene), model_(model), options_(options) {
+  std::error_code ec;
+  std::filesystem::create_directories(scene.directory, ec);
+  if (ec || !std::filesystem::is_directory(scene.directory))
+    throw InputError(scene.source + ": output.directory: cannot create '" + scene.directory + "': " +
+                     (ec ? ec.message() : "not a directory"));
+  if (options.write_frames) pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
+  try {
+    csv_.open(scene.directory + "/timeseries.csv", csv_columns());
+  } catch (const std::exception& e) {
+    throw InputError(scene.source + ": output.directory: " + e.what());
+  }
+}
+
+std::vector<std::string> RunOutput::csv_columns() const {
+  std::vector<std::string> c = {"t", "dt", "steps", "kinetic_energy", "max_speed", "cv", "density_mean", "density_rms"};
+  if (scene_.ghia_re) c.insert(c.end(), {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms"});
+  if (scene_.poiseuille) c.insert(c.end(), {"tstar", "poiseuille_eps"});
+  return c;
+}
+
+void RunOutput::write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats) {
+  auto t0 = clock_type::now();
+  RhsEvaluator& rhs = *model_.rhs;
+  rhs.eval(t, y, nullptr);  // fresh density, pressure, neighbours at the output state
+  const FluidFields& f = rhs.fields();
+  last_ = flow_metrics(f, d0);
+  last_t_ = t;
+  std::vector<double> row = {t, stats.last_step, static_cast<double>(stats.steps), last_.kinetic_energy,
+                             last_.max_speed, last_.cv, last_.density_mean, last_.density_rms};
+  if (scene_.ghia_re) {
+    const GhiaErrors g = ghia_errors(f, scene_.ghia_re, scene_.min[0], scene_.min[1],
+                                     scene_.max[0] - scene_.min[0], lid_speed(scene_));
+    row.insert(row.end(), {g.u_linf, g.u_rms, g.v_linf, g.v_rms});
+    case_metrics_.set("ghia_u_linf", g.u_linf).set("ghia_u_rms", g.u_rms);
+    case_metrics_.set("ghia_v_linf", g.v_linf).set("ghia_v_rms", g.v_rms);
+    std::vector<std::vector<double>> prof;
+    for (std::size_t i = 0; i < g.u_coord.size(); ++i) prof.push_back({g.u_coord[i], g.u_ref[i], g.u_sph[i]});
+    write_csv(scene_.directory + "/ghia_u.csv", {"y", "u_ghia", "u_sph"}, prof);
+    prof.clear();
+    for (std::size_t i = 0; i < g.v_coord.size(); ++i) prof.push_back({g.v_coord[i], g.v_ref[i], g.v_sph[i]});
+    write_csv(scene_.directory + "/ghia_v.csv", {"x", "v_ghia", "v_sph"}, prof);
+  }
+  if (scene_.poiseuille) {
+    const double d = 0.5 * (scene_.max[1] - scene_.min[1]);
+    const double tstar = poiseuille_tstar(t, d, scene_.viscosity);
+    const double eps = poiseuille_epsilon(f, scene_.min[1], scene_.max[1], scene_.viscosity, constant_force_x(scene_));
+    row.insert(row.end(), {tstar, eps});
+    if (tstar >= 0.5 - 1e-9 && tstar <= 2.0 + 1e-9 && std::isfinite(eps))
+      eps_max_window_ = std::max(eps_max_window_, eps);
+    case_metrics_.set("poiseuille_rms", eps).set("poiseuille_tstar", tstar);
+    case_metrics_.set("poiseuille_eps_max_tstar_0.5_2", eps_max_window_);
+  }
+  diagnostic_seconds_ += since(t0);
+
+  t0 = clock_type::now();
+  csv_.row(row);
+  if (pvd_) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
+    Frame fr;
+    fr.dimension = f.dim;
+    fr.n = f.n_real;
+    fr.time = t;
+    fr.x = f.x.data();
+    fr.y = f.dim == 2 ? f.y.data() : nullptr;
+    fr.u = f.u.data();
+    fr.v = f.dim == 2 ? f.v.data() : nullptr;
+    fr.pressure = f.p.data();
+    fr.density = f.rho.data();
+    fr.mass = f.m.data();
+    fr.id = model_.particles.id.data();
+    fr.phase = model_.particles.phase.data();
+    write_vtp(scene_.directory + "/" + name, fr);
+    pvd_->add(t, name);
+  }
+  ++frames_;
+  output_seconds_ += since(t0);
+}
+
+void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals) {
+  const RhsTiming& rt = model_.rhs->timing();
+  Json j = Json::object();
+  j.set("scene", scene_.name).set("scheme", scene_.scheme);
+  j.set("particles", model_.particles.n).set("dimension", scene_.dimension);
+  j.set("final_time", last_t_).set("steps", stats.steps).set("rhs_evals", stats.rhs_evals);
+  j.set("diagnostic_evals", diag_evals).set("step_attempts", stats.attempts);
+  j.set("error_test_failures", stats.error_test_fails);
+  j.set("wall_seconds", wall_seconds).set("status", result.exit_code == 0 ? "ok" : "failed");
+  if (result.exit_code != 0) j.set("failure", result.message);
+  j.set("frames", frames_);
+  j.set("terms", Json(model_.terms));
+  Json timing = Json::object();
+  timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", 0.0);
+  timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
+  timing.set("integrator_other", wall_seconds - rt.neighbors - rt.terms - diagnostic_seconds_ - output_seconds_);
+  j.set("timing", timing);
+  Json metrics = Json::object();
+  metrics.set("kinetic_energy", last_.kinetic_energy).set("max_speed", last_.max_speed).set("cv", last_.cv);
+  metrics.set("density_mean", last_.density_mean).set("density_rms", last_.density_rms);
+  for (const char* key : {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms", "poiseuille_rms",
+                          "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2"})
+    if (const Json* v = case_metrics_.find(key)) metrics.set(key, *v);
+  j.set("metrics", metrics);
+  Json params = Json::object();
+  params.set("h", model_.h).set("sound_speed", model_.sound_speed);
+  j.set("derived", params);
+  j.set("resolved_scene", scene_.resolved_toml);
+  write_json_atomic(scene_.directory + "/summary.json", j);
+}
+
+}  // namespace arksph

@@ -1,0 +1,40 @@
+// Everything a run writes: VTP frames + PVD, timeseries.csv (flow and case metrics), summary.json.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/setup.hpp"
+#include "app/simulation.hpp"
+#include "diagnostics/flow_metrics.hpp"
+#include "io/csv_writer.hpp"
+#include "io/pvd_writer.hpp"
+#include "io/summary_json.hpp"
+
+namespace arksph {
+
+class RunOutput {
+ public:
+  RunOutput(const Scene& scene, Model& model, const RunOptions& options);
+  void add_term(const std::string& t) { model_.terms.push_back(t); }
+  // Refreshes the fields at (t, y), computes the metrics, writes a frame and a CSV row.
+  void write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats);
+  // Writes summary.json (also after a failure: status "failed" with the diagnosis).
+  void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals);
+
+ private:
+  std::vector<std::string> csv_columns() const;
+  const Scene& scene_;
+  Model& model_;
+  RunOptions options_;
+  std::unique_ptr<PvdCollection> pvd_;
+  TimeseriesCsv csv_;
+  int frames_ = 0;
+  double last_t_ = 0;
+  FlowMetrics last_;
+  Json case_metrics_ = Json::object();
+  double eps_max_window_ = 0;  // Poiseuille: max eps for t* in [0.5, 2]
+  double output_seconds_ = 0, diagnostic_seconds_ = 0;
+};
+
+}  // namespace arksph

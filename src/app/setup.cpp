@@ -1,0 +1,73 @@
+#include "app/setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "rhs/terms.hpp"
+
+namespace arksph {
+
+Model build_model(const Scene& scene) {
+  Model model;
+  model.particles = make_lattice(scene);
+  model.h = scene.h_over_dx * scene.spacing;
+  Kernel kernel = make_kernel(scene.kernel, model.h, scene.dimension);
+  for (int k = 0; k < scene.dimension; ++k) {
+    const double length = scene.max[k] - scene.min[k];
+    if (kernel.radius() >= length)
+      throw InputError(scene.source + ": method.h_over_dx: kernel support " + std::to_string(kernel.radius()) +
+                       " is not smaller than the box length " + std::to_string(length));
+  }
+  double u0max = 0;
+  for (std::size_t a = 0; a < model.particles.n; ++a) {
+    double s2 = 0;
+    for (int k = 0; k < scene.dimension; ++k) s2 += model.particles.init_vel[k][a] * model.particles.init_vel[k][a];
+    u0max = std::max(u0max, std::sqrt(s2));
+  }
+  if (scene.scheme == "wcsph") model.sound_speed = resolve_sound_speed(scene, u0max);
+  auto terms = terms_from_scene(scene, model.sound_speed);
+  for (const auto& t : terms) model.terms.push_back(t->name());
+  bool walls = false, periodic = false;
+  for (int s = 0; s < 2 * scene.dimension; ++s) {
+    if (scene.sides[s].kind == SideKind::wall) walls = true;
+    if (scene.sides[s].kind == SideKind::periodic) periodic = true;
+  }
+  if (walls) model.terms.push_back(scene.free_slip_divergence ? "walls:ghost+free_slip_divergence" : "walls:ghost");
+  if (periodic) model.terms.push_back("periodic:images");
+  model.terms.push_back("kernel:" + scene.kernel);
+  model.terms.push_back("integrator:erkstep:" + scene.integrator);
+  model.rhs = std::make_unique<RhsEvaluator>(scene, model.particles, std::move(kernel), std::move(terms));
+  return model;
+}
+
+double stable_step(const Scene& scene, const Model& model, double max_speed, double max_accel) {
+  const double h = model.h;
+  double wall_speed = 0;
+  for (int s = 0; s < 2 * scene.dimension; ++s)
+    wall_speed = std::max(wall_speed, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
+  const double speed = std::max(max_speed, wall_speed);
+  double dt = std::numeric_limits<double>::infinity();
+  const double signal = model.sound_speed + speed;  // eq. 35 (eq. 34 when c = 0)
+  if (signal > 0) dt = std::min(dt, scene.cfl * h / signal);
+  if (scene.viscosity > 0) dt = std::min(dt, 0.125 * h * h / scene.viscosity);  // eq. 36
+  if (max_accel > 0) dt = std::min(dt, 0.25 * std::sqrt(h / max_accel));        // eq. 37
+  if (!std::isfinite(dt)) dt = scene.end;
+  return dt;
+}
+
+ErkOptions integrator_options(const Scene& scene) {
+  ErkOptions o;
+  o.table = scene.integrator;
+  o.fixed_dt = scene.dt;
+  o.rtol = scene.rtol;
+  o.atol = scene.atol;
+  o.max_steps = scene.max_steps;
+  if (scene.dt == 0 && !erk_table_has_embedding(scene.integrator))
+    throw InputError(scene.source + ": time.dt: table " + scene.integrator +
+                     " has no embedding, so it needs a fixed step (time.dt > 0)");
+  return o;
+}
+
+}  // namespace arksph

@@ -1,0 +1,33 @@
+// Builds the numerical pieces a scene needs, and only those.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/particles.hpp"
+#include "core/scene.hpp"
+#include "integrate/erk_integrator.hpp"
+#include "rhs/evaluator.hpp"
+
+namespace arksph {
+
+struct Model {
+  ParticleSet particles;
+  double h = 0;            // smoothing length
+  double sound_speed = 0;  // wcsph only
+  std::unique_ptr<RhsEvaluator> rhs;
+  std::vector<std::string> terms;  // everything constructed: RHS terms, boundaries, integrator
+};
+
+// Throws InputError for combinations only detectable here (e.g. support larger than the box).
+Model build_model(const Scene& scene);
+
+// Largest stable step (Szewc et al. 2012 eqs. 34-37) at the current fields:
+//   CFL  dt <= cfl h / (c + |u|max)  (wcsph, eq. 35) or cfl h / |u|max (eq. 34),
+//   viscous dt <= 0.125 h^2 / nu (eq. 36),  force dt <= 0.25 sqrt(h / |a|max) (eq. 37).
+double stable_step(const Scene& scene, const Model& model, double max_speed, double max_accel);
+
+// ERKStep options from the scene (table, fixed or adaptive step).
+ErkOptions integrator_options(const Scene& scene);
+
+}  // namespace arksph

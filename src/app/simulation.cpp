@@ -1,0 +1,108 @@
+// The run loop: step (ARKODE), check, diagnose, write. Reads like the algorithm:
+//   set up -> write t = 0 -> repeat { advance one step; check the state } and at each output time
+//   { refresh fields; diagnostics; write frame, CSV row } -> summary.json.
+#include "app/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/progress.hpp"
+#include "app/run_output.hpp"
+#include "app/setup.hpp"
+#include "app/state_check.hpp"
+#include "core/errors.hpp"
+#include "diagnostics/flow_metrics.hpp"
+
+namespace arksph {
+
+namespace {
+double max_speed_of(const StateLayout& L, const double* y) {
+  double m2 = 0;
+  for (std::size_t a = 0; a < L.n; ++a) {
+    double s2 = 0;
+    for (int k = 0; k < L.dim; ++k) s2 += y[L.vel(k) + a] * y[L.vel(k) + a];
+    m2 = std::max(m2, s2);
+  }
+  return std::sqrt(m2);
+}
+
+void print_run_header(const Scene& scene, const Model& model) {
+  std::printf("arksph: scene '%s' (%s)\n", scene.name.c_str(), scene.source.c_str());
+  std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s\n", scene.scheme.c_str(),
+              model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str());
+  if (model.sound_speed > 0) std::printf("  sound speed %.6g\n", model.sound_speed);
+  std::printf("  integrator %s, %s, end time %g\n", scene.integrator.c_str(),
+              scene.dt > 0 ? ("fixed dt " + std::to_string(scene.dt)).c_str() : "adaptive dt (stability limited)",
+              scene.end);
+  std::printf("  terms:");
+  for (const auto& t : model.terms) std::printf(" %s", t.c_str());
+  std::printf("\n  output: %s\n", scene.directory.c_str());
+  std::fflush(stdout);
+}
+}  // namespace
+
+RunResult run_simulation(const Scene& scene, const RunOptions& options) {
+  using clock = std::chrono::steady_clock;
+  const auto wall_start = clock::now();
+  Model model = build_model(scene);
+  RhsEvaluator& rhs = *model.rhs;
+  const StateLayout& layout = rhs.layout();
+  print_run_header(scene, model);
+
+  RunOutput out(scene, model, options);  // creates the directory, CSV; throws InputError if unwritable
+
+  std::vector<double> y0(layout.size());
+  rhs.initial_state(y0.data());
+  rhs.eval(0.0, y0.data(), nullptr);
+  const std::vector<double> d0 = number_density(rhs.fields());
+
+  ErkOptions eo = integrator_options(scene);
+  eo.stability = [&](double, const double* y) {
+    return stable_step(scene, model, max_speed_of(layout, y), rhs.max_acceleration());
+  };
+  eo.initial_dt = stable_step(scene, model, max_speed_of(layout, y0.data()), rhs.max_acceleration());
+  const long diag_evals_before = rhs.evaluations();
+  ErkIntegrator integrator([&](double t, const double* y, double* ydot) { rhs.eval(t, y, ydot); }, y0, 0.0, eo);
+  if (integrator.workaround_installed()) out.add_term("erkstep:fsal_bug_workaround");
+
+  StateChecker checker(scene, model);
+  Progress progress(scene.end, options.quiet);
+  long diag_evals = rhs.evaluations() - diag_evals_before + 1;
+
+  // Output at t = 0, every `every`, and the end time exactly.
+  out.write(0.0, y0.data(), d0, integrator.stats());
+  double t = 0.0;
+  int frame = 1;
+  RunResult result;
+  try {
+    while (t < scene.end) {
+      double t_next = scene.every > 0 ? frame * scene.every : scene.end;
+      if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
+      while (t < t_next) {
+        t = integrator.step(t_next);
+        const ErkStats st = integrator.stats();
+        checker.check(t, integrator.state());
+        progress.step(t, st.steps, st.last_step);
+      }
+      const long before = rhs.evaluations();
+      out.write(t, integrator.state(), d0, integrator.stats());
+      diag_evals += rhs.evaluations() - before;
+      const ErkStats st = integrator.stats();
+      progress.frame(t, st.steps, st.last_step);
+      ++frame;
+    }
+  } catch (const NumericalFailure& e) {
+    result.exit_code = 3;
+    result.message = e.what();
+  }
+  progress.finish();
+  const ErkStats st = integrator.stats();
+  const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
+  out.finish(result, st, wall, diag_evals);
+  return result;
+}
+
+}  // namespace arksph

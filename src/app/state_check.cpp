@@ -1,0 +1,54 @@
+#include "app/state_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace arksph {
+
+StateChecker::StateChecker(const Scene& scene, const Model& model) : scene_(scene), model_(model) {
+  // Bound on the speed: 100 x the largest physical speed scale of the scene (sound speed for wcsph,
+  // wall speeds, initial speeds, sqrt(|f| L)); a run beyond it has blown up.
+  double u_ref = model.sound_speed;
+  for (int s = 0; s < 2 * scene.dimension; ++s)
+    u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
+  for (int k = 0; k < scene.dimension; ++k)
+    for (double u : model.particles.init_vel[k]) u_ref = std::max(u_ref, std::abs(u));
+  u_ref = std::max(u_ref, 10.0 * std::sqrt(model.rhs->max_acceleration() * (scene.max[0] - scene.min[0])));
+  speed_limit_ = 100.0 * std::max(u_ref, 1e-6);
+  margin_ = model.rhs->kernel().radius();
+}
+
+void StateChecker::check(double t, const double* y) const {
+  const StateLayout& L = model_.rhs->layout();
+  const auto& ids = model_.particles.id;
+  auto fail = [&](std::size_t a, const std::string& what) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "t = %.9g, particle id %lld: ", t, static_cast<long long>(ids[a]));
+    throw NumericalFailure(buf + what);
+  };
+  for (std::size_t a = 0; a < L.n; ++a) {
+    double s2 = 0;
+    for (int k = 0; k < L.dim; ++k) {
+      const double x = y[L.pos(k) + a], u = y[L.vel(k) + a];
+      if (!std::isfinite(x)) fail(a, std::string("position ") + "xy"[k] + " is not finite");
+      if (!std::isfinite(u)) fail(a, std::string("velocity ") + "uv"[k] + " is not finite");
+      s2 += u * u;
+      const bool wall_lo = scene_.sides[2 * k].kind == SideKind::wall;
+      const bool wall_hi = scene_.sides[2 * k + 1].kind == SideKind::wall;
+      if ((wall_lo && x < scene_.min[k] - margin_) || (wall_hi && x > scene_.max[k] + margin_))
+        fail(a, std::string("escaped through a wall (") + "xy"[k] + " = " + std::to_string(x) + ")");
+    }
+    if (std::sqrt(s2) > speed_limit_)
+      fail(a, "speed " + std::to_string(std::sqrt(s2)) + " exceeds the blow-up bound " + std::to_string(speed_limit_));
+    if (L.has_density) {
+      const double rho = y[L.rho() + a];
+      if (!std::isfinite(rho) || rho <= 0) fail(a, "density " + std::to_string(rho) + " is not positive and finite");
+    }
+  }
+}
+
+}  // namespace arksph

@@ -1,0 +1,74 @@
+// The embedded default scene: 2D lid-driven cavity at Re = U L / nu = 1 * 1 / 0.01 = 100, compared with
+// Ghia, Ghia & Shin 1982 (Table I, Re = 100). It is also the commented reference of every scene key.
+#include "io/scene_reader.hpp"
+
+namespace arksph {
+
+const char* default_scene_toml() {
+  return R"toml(# arksph scene: lid-driven cavity, Re = 100 (Ghia, Ghia & Shin 1982).
+# Every key is shown; all but domain.min, domain.max, fluid.spacing and time.end have defaults.
+# Any key can be overridden on the command line: arksph run --set time.end=2 --set method.scheme=isph
+
+[scene]
+name = "cavity_re100"          # label for messages, summary.json and the default output directory
+dimension = 2                  # 1 or 2
+
+[domain]
+min = [0.0, 0.0]               # lower corner of the fluid box (one number per dimension)
+max = [1.0, 1.0]               # upper corner (max > min in every component)
+
+[boundary]                     # one entry per side: left, right, bottom, top (1D: left, right only)
+# kind = "wall" | "periodic" (a periodic side needs its opposite periodic too)
+# velocity = wall velocity (walls only; default 0), slip = "no_slip" | "free_slip" (walls only)
+left   = { kind = "wall" }
+right  = { kind = "wall" }
+bottom = { kind = "wall" }
+top    = { kind = "wall", velocity = [1.0, 0.0], slip = "no_slip" }   # the moving lid
+corner_alpha = 0.0             # corner ghost weighting, Szewc et al. 2012 eq. 46, in [-1, 1]
+free_slip_divergence = false   # free-slip images for the velocity divergence only (Szewc §6)
+
+[fluid]
+spacing = 0.03333333333333333  # initial lattice spacing dx = 1/30 (must divide each domain length)
+density = 1.0                  # reference density rho0 (> 0)
+viscosity = 0.01               # kinematic viscosity nu (>= 0): Re = 1 * 1 / 0.01 = 100
+body_force = ["0", "0"]        # acceleration g(x, y, t), one expression per dimension
+
+[initial]
+velocity = ["0", "0"]          # initial velocity u(x, y), one expression per dimension
+
+# Further phases, by region (same number density, other mass); expressions in x, y and pi:
+# [[phase]]
+# where = "y > 1 - 0.15*sin(2*pi*x)"   # non-zero selects the particle; must select at least one
+# density = 1.8                        # reference density of the phase (> 0)
+
+[method]
+scheme = "wcsph"               # "wcsph" | "isph" | "isph-gpps"  (arksph list)
+kernel = "wendland_quintic"    # "cubic_spline" | "quartic_spline" | "wendland_quintic" | "quintic_spline"
+h_over_dx = 2.0                # smoothing length h / dx, in [0.5, 4]
+viscosity_model = "morris"     # "direct" | "two_pass" | "violeau" | "cleary" | "morris"
+sound_speed = 10.0             # WCSPH sound speed c0 (>= 0; 0: the documented default); wcsph only
+tait_gamma = 7.0               # exponent of the Tait equation of state (>= 1), Cummins & Rudman eq. 7
+density_mode = "continuity"    # "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
+pressure_gradient = "colagrossi"   # "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
+density_correction = "none"    # "none" | "pozorski_wawrenczuk" (projection schemes only)
+
+[time]
+end = 5.0                      # final simulated time (> 0)
+integrator = "ARKODE_HEUN_EULER_2_1_2"   # ARKODE explicit Butcher table (arksph list)
+dt = 0.0                       # 0: adaptive, limited by the stability bounds; > 0: fixed step
+cfl = 0.25                     # coefficient of the stability limits, Szewc eqs. 34-35, in (0, 1]
+rtol = 1e-4                    # relative tolerance (adaptive mode only, > 0)
+atol = 1e-8                    # absolute tolerance (adaptive mode only, > 0)
+max_steps = 100000000          # abort after this many steps (>= 1)
+
+[output]
+directory = "runs/default"     # output folder (--out overrides; default runs/<scene.name>)
+every = 0.5                    # simulated time between VTP frames (0: first and last only)
+
+[metrics]
+ghia_re = 100                  # Ghia et al. 1982 centreline errors: 0 (off), 100 or 1000
+poiseuille = false             # Poiseuille error of Basa et al. 2008 eqs. 36-39
+)toml";
+}
+
+}  // namespace arksph

@@ -1,0 +1,305 @@
+// Scene reader: parse the TOML text, apply the --set overrides to the tree, then validate section by
+// section into a Scene (see scene_reader.hpp; keys are documented in default_scene.cpp).
+#include "io/scene_reader.hpp"
+
+#include <toml++/toml.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "io/expression.hpp"
+#include "io/scene_schema.hpp"
+
+namespace arksph {
+
+namespace {
+
+using scene_schema::format_number;
+using scene_schema::Reporter;
+using scene_schema::Section;
+
+const char* const kSideNames[4] = {"left", "right", "bottom", "top"};
+const char* const kAxis[2] = {"x", "y"};
+
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  auto b = s.find_first_not_of(" \t");
+  auto e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+toml::table parse_document(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(std::string_view(text), std::string_view(source));
+  } catch (const toml::parse_error& e) {
+    const auto& at = e.source().begin;
+    throw InputError(one_line(source + ":" + std::to_string(at.line) + ":" +
+                              std::to_string(at.column) + ": syntax error: " +
+                              std::string(e.description())));
+  }
+}
+
+// Applies "KEY=VALUE" to the tree; returns (KEY, "--set KEY=VALUE") for the error messages.
+std::pair<std::string, std::string> apply_override(toml::table& root, const std::string& set) {
+  const std::string option = "--set " + set;
+  auto eq = set.find('=');
+  if (eq == std::string::npos)
+    throw InputError(one_line(option + ": expected KEY=VALUE, e.g. --set time.end=2"));
+  const std::string key = trim(set.substr(0, eq));
+  const std::string text = set.substr(eq + 1);
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    auto dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  for (const auto& p : parts)
+    if (p.empty())
+      throw InputError(one_line(option + ": expected KEY=VALUE with KEY a dotted path such as "
+                                         "time.end, got \"" + key + "\""));
+
+  // VALUE as a TOML value (number, boolean, string, array, inline table), else a bare string.
+  toml::table holder;
+  try {
+    holder = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    holder = toml::table{};
+  }
+  if (holder.size() != 1 || !holder.get("v")) {
+    holder = toml::table{};
+    holder.insert("v", trim(text));
+  }
+
+  toml::table* t = &root;
+  std::string walked;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    walked += (walked.empty() ? "" : ".") + parts[i];
+    if (!t->get(parts[i])) t->insert(parts[i], toml::table{});
+    t = t->get(parts[i])->as_table();
+    if (!t) throw InputError(one_line(option + ": " + walked + ": is not a table, cannot set " + key));
+  }
+  holder.get("v")->visit([&](auto&& value) { t->insert_or_assign(parts.back(), std::move(value)); });
+  return {key, option};
+}
+
+// Fails unless `length` holds a whole number (>= 2) of particles of size `spacing`.
+void check_lattice(const Section& fluid, double spacing, double length, int axis) {
+  const double n = length / spacing;
+  const double count = std::round(n);
+  if (std::abs(n - count) > 1e-6 * std::max(count, 1.0))
+    fluid.fail("spacing", "does not divide the domain length " + format_number(length) + " along " +
+                              kAxis[axis] + " into a whole number of particles (length/spacing = " +
+                              format_number(n) + ")");
+  if (count < 2)
+    fluid.fail("spacing", "gives " + format_number(count) + " particle(s) along " + kAxis[axis] +
+                              "; at least 2 are needed");
+}
+
+// Fails unless `where` selects at least one point of the initial lattice min + (i + 1/2) spacing.
+void check_phase_region(const Scene& s, const Section& phase, const std::string& where) {
+  const Expression region(where, {"x", "y"});
+  const long nx = std::lround((s.max[0] - s.min[0]) / s.spacing);
+  const long ny = s.dimension == 2 ? std::lround((s.max[1] - s.min[1]) / s.spacing) : 1;
+  for (long j = 0; j < ny; ++j) {
+    const double y = s.dimension == 2 ? s.min[1] + (j + 0.5) * s.spacing : 0.0;
+    for (long i = 0; i < nx; ++i)
+      if (region.eval(s.min[0] + (i + 0.5) * s.spacing, y) != 0.0) return;
+  }
+  phase.fail("where", "selects no particle of the initial lattice");
+}
+
+void read_scene_domain(const Section& root, Scene& s) {
+  const Section scene = root.section("scene", {"name", "dimension"});
+  s.name = scene.string("name", s.name);  // label: messages, summary.json, default output directory
+  if (s.name.empty()) scene.fail("name", "must not be empty");
+  s.dimension = static_cast<int>(scene.integer("dimension", 2));  // 1 or 2
+  if (s.dimension != 1 && s.dimension != 2)
+    scene.fail("dimension", "must be 1 or 2, got " + std::to_string(s.dimension));
+  const std::size_t dim = s.dimension;
+
+  const Section domain = root.section("domain", {"min", "max"});
+  const auto lo = domain.numbers("min", dim, std::nullopt);  // lower corner of the fluid box
+  const auto hi = domain.numbers("max", dim, std::nullopt);  // upper corner
+  for (std::size_t d = 0; d < dim; ++d)
+    if (!(hi[d] > lo[d]))
+      domain.fail("max", "must exceed domain.min in every component (max[" + std::to_string(d) +
+                             "] = " + format_number(hi[d]) + ", min[" + std::to_string(d) + "] = " +
+                             format_number(lo[d]) + ")");
+  s.min = {lo[0], dim == 2 ? lo[1] : 0.0};
+  s.max = {hi[0], dim == 2 ? hi[1] : 0.0};
+}
+
+void read_boundary(const Section& root, Scene& s) {
+  const Section b = root.section(
+      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence"});
+  const std::size_t dim = s.dimension;
+  for (int i = 0; i < 4; ++i) {
+    if (i >= 2 && dim == 1) {
+      if (b.has(kSideNames[i])) b.fail(kSideNames[i], "not allowed when scene.dimension = 1");
+      s.sides[i] = SideSpec{};  // unused in 1D
+      continue;
+    }
+    const Section side = b.section(kSideNames[i], {"kind", "velocity", "slip"});
+    SideSpec& spec = s.sides[i];
+    // kind: "wall" (mirror ghost particles) | "periodic" (the opposite side must be periodic too)
+    spec.kind = side.one_of("kind", {"wall", "periodic"}, "wall") == "wall" ? SideKind::wall
+                                                                            : SideKind::periodic;
+    if (spec.kind == SideKind::periodic)
+      for (const char* wall_only : {"velocity", "slip"})
+        if (side.has(wall_only)) side.fail(wall_only, "only a wall takes this key, the side is periodic");
+    // velocity: wall velocity (a moving lid), one number per dimension
+    const auto w = side.numbers("velocity", dim, std::vector<double>(dim, 0.0));
+    spec.velocity = {w[0], dim == 2 ? w[1] : 0.0};
+    // slip: "no_slip" (ghosts mirror the velocity about w) | "free_slip" (tangential copied)
+    spec.slip = side.one_of("slip", {"no_slip", "free_slip"}, "no_slip") == "no_slip"
+                    ? SlipKind::no_slip
+                    : SlipKind::free_slip;
+  }
+  for (int i = 0; i < 2 * static_cast<int>(dim); i += 2)
+    if ((s.sides[i].kind == SideKind::periodic) != (s.sides[i + 1].kind == SideKind::periodic)) {
+      const int p = s.sides[i].kind == SideKind::periodic ? i : i + 1;
+      b.fail(kSideNames[p], std::string("periodic requires boundary.") + kSideNames[p ^ 1] +
+                                " to be periodic too");
+    }
+  s.corner_alpha = b.number("corner_alpha", s.corner_alpha);  // Szewc 2012 eq. 46
+  b.require(s.corner_alpha >= -1 && s.corner_alpha <= 1, "corner_alpha", "in [-1, 1]", s.corner_alpha);
+  s.free_slip_divergence = b.boolean("free_slip_divergence", s.free_slip_divergence);
+  bool any_wall = false;
+  for (std::size_t i = 0; i < 2 * dim; ++i) any_wall |= s.sides[i].kind == SideKind::wall;
+  if (s.free_slip_divergence && !any_wall)
+    b.fail("free_slip_divergence", "needs at least one wall, but every side is periodic");
+}
+
+void read_fluid(const Section& root, Scene& s) {
+  const std::size_t dim = s.dimension;
+  const std::vector<std::string> zeros(dim, "0");
+  const Section f = root.section("fluid", {"spacing", "density", "viscosity", "body_force"});
+  s.spacing = f.number("spacing", std::nullopt);  // initial lattice spacing dx
+  f.require(s.spacing > 0, "spacing", "> 0", s.spacing);
+  for (std::size_t d = 0; d < dim; ++d) check_lattice(f, s.spacing, s.max[d] - s.min[d], d);
+  s.density = f.number("density", s.density);  // reference density rho0
+  f.require(s.density > 0, "density", "> 0", s.density);
+  s.viscosity = f.number("viscosity", s.viscosity);  // kinematic viscosity nu
+  f.require(s.viscosity >= 0, "viscosity", ">= 0", s.viscosity);
+  s.body_force = f.expressions("body_force", dim, {"x", "y", "t"}, zeros);  // acceleration g(x, y, t)
+
+  const Section init = root.section("initial", {"velocity"});
+  s.initial_velocity = init.expressions("velocity", dim, {"x", "y"}, zeros);  // u(x, y, 0)
+
+  s.phases.clear();
+  if (const toml::node* node = root.node("phase")) {
+    const toml::array* list = node->as_array();
+    if (!list || (!list->empty() && !list->is_array_of_tables()))
+      root.fail("phase", "expected an array of tables ([[phase]] sections)");
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const Section p(root.reporter(), list->get(i), "phase[" + std::to_string(i) + "]",
+                      {"where", "density"});
+      PhaseSpec phase;
+      phase.where = p.expression("where", {"x", "y"}, std::nullopt);  // region: non-zero selects
+      phase.density = p.number("density", std::nullopt);             // reference density of the phase
+      p.require(phase.density > 0, "density", "> 0", phase.density);
+      check_phase_region(s, p, phase.where);
+      s.phases.push_back(phase);
+    }
+  }
+}
+
+void read_method(const Section& root, Scene& s) {
+  const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
+                                            "sound_speed", "tait_gamma", "density_mode",
+                                            "pressure_gradient", "density_correction"});
+  s.scheme = m.registered("scheme", "scheme", s.scheme);
+  s.kernel = m.registered("kernel", "kernel", s.kernel);
+  s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
+  m.require(s.h_over_dx >= 0.5 && s.h_over_dx <= 4, "h_over_dx", "in [0.5, 4]", s.h_over_dx);
+  s.viscosity_model = m.registered("viscosity_model", "viscosity_model", s.viscosity_model);
+  s.sound_speed = m.number("sound_speed", s.sound_speed);  // WCSPH c0; 0: default
+  m.require(s.sound_speed >= 0, "sound_speed", ">= 0", s.sound_speed);
+  s.tait_gamma = m.number("tait_gamma", s.tait_gamma);  // Tait exponent (C&R eq. 7)
+  m.require(s.tait_gamma >= 1, "tait_gamma", ">= 1", s.tait_gamma);
+  s.density_mode = m.registered("density_mode", "density_mode", s.density_mode);
+  s.pressure_gradient = m.registered("pressure_gradient", "pressure_gradient", s.pressure_gradient);
+  s.density_correction = m.registered("density_correction", "density_correction", s.density_correction);
+  if (s.density_correction != "none" && s.scheme == "wcsph")
+    m.fail("density_correction", "\"" + s.density_correction +
+                                     "\" needs a projection scheme; scheme \"wcsph\" takes only \"none\"");
+  if (s.sound_speed != 0 && s.scheme != "wcsph")
+    m.reporter().warn(m.key("sound_speed"), "unused by scheme " + s.scheme);
+}
+
+void read_time_output(const Section& root, Scene& s) {
+  const Section t = root.section("time", {"end", "integrator", "dt", "cfl", "rtol", "atol", "max_steps"});
+  s.end = t.number("end", std::nullopt);  // final simulated time
+  t.require(s.end > 0, "end", "> 0", s.end);
+  s.integrator = t.registered("integrator", "erk_table", s.integrator);  // ARKODE table name
+  s.dt = t.number("dt", s.dt);  // 0: adaptive; > 0: fixed step
+  t.require(s.dt >= 0, "dt", ">= 0", s.dt);
+  s.cfl = t.number("cfl", s.cfl);
+  t.require(s.cfl > 0 && s.cfl <= 1, "cfl", "in (0, 1]", s.cfl);
+  s.rtol = t.number("rtol", s.rtol);
+  t.require(s.rtol > 0, "rtol", "> 0", s.rtol);
+  s.atol = t.number("atol", s.atol);
+  t.require(s.atol > 0, "atol", "> 0", s.atol);
+  s.max_steps = t.integer("max_steps", s.max_steps);
+  t.require(s.max_steps >= 1, "max_steps", ">= 1", static_cast<double>(s.max_steps));
+
+  const Section o = root.section("output", {"directory", "every"});
+  s.directory = o.string("directory", "runs/" + s.name);
+  if (s.directory.empty()) o.fail("directory", "must not be empty");
+  s.every = o.number("every", s.every);  // simulated time between frames; 0: first and last only
+  o.require(s.every >= 0, "every", ">= 0", s.every);
+
+  const Section mt = root.section("metrics", {"ghia_re", "poiseuille"});
+  s.ghia_re = static_cast<int>(mt.integer("ghia_re", s.ghia_re));
+  if (s.ghia_re != 0 && s.ghia_re != 100 && s.ghia_re != 1000)
+    mt.fail("ghia_re", "must be 0 (off), 100 or 1000, got " + std::to_string(s.ghia_re));
+  s.poiseuille = mt.boolean("poiseuille", s.poiseuille);
+}
+
+}  // namespace
+
+Scene read_scene_text(const std::string& toml_text, const std::string& source_name,
+                      const std::vector<std::string>& sets, std::ostream& warnings) {
+  toml::table tree = parse_document(toml_text, source_name);
+  std::vector<std::pair<std::string, std::string>> overrides;
+  for (const auto& set : sets) overrides.push_back(apply_override(tree, set));
+  const Reporter rep(source_name, overrides, &warnings);
+  const Section root(rep, &tree, "",
+                     {"scene", "domain", "boundary", "fluid", "initial", "phase", "method", "time",
+                      "output", "metrics"});
+  Scene s;
+  s.source = source_name;
+  read_scene_domain(root, s);
+  read_boundary(root, s);
+  read_fluid(root, s);
+  read_method(root, s);
+  read_time_output(root, s);
+  s.resolved_toml = scene_to_toml(s);
+  return s;
+}
+
+Scene read_scene_text(const std::string& toml_text, const std::string& source_name,
+                      const std::vector<std::string>& sets) {
+  return read_scene_text(toml_text, source_name, sets, std::cerr);
+}
+
+Scene read_scene_file(const std::string& path, const std::vector<std::string>& sets) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(one_line(path + ": cannot open scene file: " + std::strerror(errno)));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_scene_text(text.str(), path, sets);
+}
+
+}  // namespace arksph

@@ -1,0 +1,103 @@
+// Scene -> TOML text with every key, in the order of the file format (Scene::resolved_toml).
+// Numbers are written in their shortest exact form, so the text reads back to the same Scene.
+#include <toml++/toml.h>
+
+#include <sstream>
+
+#include "io/scene_reader.hpp"
+#include "io/scene_schema.hpp"
+
+namespace arksph {
+
+namespace {
+
+std::string quote(const std::string& s) {
+  std::ostringstream os;
+  os << toml::value<std::string>(s);  // TOML string syntax, escapes included
+  return os.str();
+}
+
+std::string num(double v) {  // a TOML float: always with a '.' or an exponent
+  std::string t = scene_schema::format_number(v);
+  if (t.find_first_of(".eE") == std::string::npos) t += ".0";
+  return t;
+}
+
+std::string numbers(const double* v, int n) {
+  std::string out = "[";
+  for (int i = 0; i < n; ++i) out += (i ? ", " : "") + num(v[i]);
+  return out + "]";
+}
+
+std::string strings(const std::vector<std::string>& v) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + quote(v[i]);
+  return out + "]";
+}
+
+std::string boolean(bool b) { return b ? "true" : "false"; }
+
+}  // namespace
+
+std::string scene_to_toml(const Scene& s) {
+  const int dim = s.dimension;
+  std::ostringstream o;
+  o << "[scene]\n"
+    << "name = " << quote(s.name) << "\n"
+    << "dimension = " << dim << "\n\n";
+  o << "[domain]\n"
+    << "min = " << numbers(s.min.data(), dim) << "\n"
+    << "max = " << numbers(s.max.data(), dim) << "\n\n";
+  o << "[boundary]\n";
+  const char* const names[4] = {"left", "right", "bottom", "top"};
+  for (int i = 0; i < 2 * dim; ++i) {
+    const SideSpec& side = s.sides[i];
+    o << names[i] << " = { kind = ";
+    if (side.kind == SideKind::periodic) {
+      o << quote("periodic") << " }\n";
+      continue;
+    }
+    o << quote("wall") << ", velocity = " << numbers(side.velocity.data(), dim)
+      << ", slip = " << quote(side.slip == SlipKind::no_slip ? "no_slip" : "free_slip") << " }\n";
+  }
+  o << "corner_alpha = " << num(s.corner_alpha) << "\n"
+    << "free_slip_divergence = " << boolean(s.free_slip_divergence) << "\n\n";
+  o << "[fluid]\n"
+    << "spacing = " << num(s.spacing) << "\n"
+    << "density = " << num(s.density) << "\n"
+    << "viscosity = " << num(s.viscosity) << "\n"
+    << "body_force = " << strings(s.body_force) << "\n\n";
+  o << "[initial]\n"
+    << "velocity = " << strings(s.initial_velocity) << "\n\n";
+  for (const PhaseSpec& p : s.phases)
+    o << "[[phase]]\n"
+      << "where = " << quote(p.where) << "\n"
+      << "density = " << num(p.density) << "\n\n";
+  o << "[method]\n"
+    << "scheme = " << quote(s.scheme) << "\n"
+    << "kernel = " << quote(s.kernel) << "\n"
+    << "h_over_dx = " << num(s.h_over_dx) << "\n"
+    << "viscosity_model = " << quote(s.viscosity_model) << "\n"
+    << "sound_speed = " << num(s.sound_speed) << "\n"
+    << "tait_gamma = " << num(s.tait_gamma) << "\n"
+    << "density_mode = " << quote(s.density_mode) << "\n"
+    << "pressure_gradient = " << quote(s.pressure_gradient) << "\n"
+    << "density_correction = " << quote(s.density_correction) << "\n\n";
+  o << "[time]\n"
+    << "end = " << num(s.end) << "\n"
+    << "integrator = " << quote(s.integrator) << "\n"
+    << "dt = " << num(s.dt) << "\n"
+    << "cfl = " << num(s.cfl) << "\n"
+    << "rtol = " << num(s.rtol) << "\n"
+    << "atol = " << num(s.atol) << "\n"
+    << "max_steps = " << s.max_steps << "\n\n";
+  o << "[output]\n"
+    << "directory = " << quote(s.directory) << "\n"
+    << "every = " << num(s.every) << "\n\n";
+  o << "[metrics]\n"
+    << "ghia_re = " << s.ghia_re << "\n"
+    << "poiseuille = " << boolean(s.poiseuille) << "\n";
+  return o.str();
+}
+
+}  // namespace arksph

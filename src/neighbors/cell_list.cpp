@@ -9,8 +9,7 @@
 namespace arksph {
 
 void CellList::build(const double* x, const double* y, std::size_t n, double radius) {
-  x_ = x;
-  y_ = y;
+  two_d_ = y != nullptr;
   r2_ = radius * radius;
   double xmin = std::numeric_limits<double>::max(), xmax = -xmin, ymin = 0, ymax = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -43,6 +42,12 @@ void CellList::build(const double* x, const double* y, std::size_t n, double rad
   order_.resize(n);
   std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) order_[fill[cell[i]]++] = static_cast<std::uint32_t>(i);
+  sx_.resize(n);
+  sy_.resize(y ? n : 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    sx_[k] = x[order_[k]];
+    if (y) sy_[k] = y[order_[k]];
+  }
 }
 
 void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, const double* y,

@@ -1,6 +1,7 @@
 // Uniform cell list over a point cloud (real particles followed by ghosts), cell side >= search radius.
 // Periodicity is not handled here: periodic images arrive as ghost points from boundary/ghosts.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -11,31 +12,30 @@ class CellList {
   // Bins n points (y may be null in 1D) into cells of side >= radius.
   void build(const double* x, const double* y, std::size_t n, double radius);
 
-  // Calls visit(j) for every point j (any index, including i itself) within `radius` of (px, py).
+  // Calls visit(j, dx, dy) for every point j (any index, including i itself) with
+  // |(px, py) - r_j| < radius, where (dx, dy) = (px, py) - r_j. Coordinates are read from copies
+  // sorted by cell, so the three cells of a stencil row are one contiguous range.
   template <class Visit>
   void for_each_near(double px, double py, Visit&& visit) const {
-    const long cx = cell_coord(px, x0_), cy = y_ ? cell_coord(py, y0_) : 0;
-    for (long jy = cy - 1; jy <= cy + 1; ++jy) {
-      if (jy < 0 || jy >= ny_) continue;
-      for (long jx = cx - 1; jx <= cx + 1; ++jx) {
-        if (jx < 0 || jx >= nx_) continue;
-        const std::size_t c = static_cast<std::size_t>(jy * nx_ + jx);
-        for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-          const std::uint32_t j = order_[k];
-          const double dx = px - x_[j], dy = y_ ? py - y_[j] : 0.0;
-          if (dx * dx + dy * dy < r2_) visit(j, dx, dy);
-        }
+    const long cx = cell_coord(px, x0_), cy = two_d_ ? cell_coord(py, y0_) : 0;
+    const long x_lo = std::max(cx - 1, 0L), x_hi = std::min(cx + 1, nx_ - 1);
+    for (long jy = std::max(cy - 1, 0L); jy <= std::min(cy + 1, ny_ - 1); ++jy) {
+      const std::uint32_t k_begin = start_[static_cast<std::size_t>(jy * nx_ + x_lo)];
+      const std::uint32_t k_end = start_[static_cast<std::size_t>(jy * nx_ + x_hi) + 1];
+      for (std::uint32_t k = k_begin; k < k_end; ++k) {
+        const double dx = px - sx_[k], dy = two_d_ ? py - sy_[k] : 0.0;
+        if (dx * dx + dy * dy < r2_) visit(order_[k], dx, dy);
       }
     }
   }
 
  private:
   long cell_coord(double p, double p0) const { return static_cast<long>((p - p0) * inv_side_); }
-  const double* x_ = nullptr;
-  const double* y_ = nullptr;
+  bool two_d_ = true;
   double x0_ = 0, y0_ = 0, inv_side_ = 1, r2_ = 0;
   long nx_ = 1, ny_ = 1;
-  std::vector<std::uint32_t> start_, order_;
+  std::vector<std::uint32_t> start_, order_;  // cell offsets; point index in cell order
+  std::vector<double> sx_, sy_;                // coordinates in cell order
 };
 
 // Neighbour pairs of each real particle a (a < n_real) among all points, self excluded, with

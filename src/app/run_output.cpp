@@ -75,6 +75,13 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     if (tstar >= 0.5 - 1e-9 && tstar <= 2.0 + 1e-9 && std::isfinite(eps))
       eps_max_window_ = std::max(eps_max_window_, eps);
     case_metrics_.set("poiseuille_rms", eps).set("poiseuille_tstar", tstar);
+    std::vector<std::vector<double>> prof;  // per particle at the latest output time (Basa Fig. 4)
+    for (std::size_t a = 0; a < f.n_real; ++a) {
+      const double exact = poiseuille_velocity(f.y[a] - 0.5 * (scene_.min[1] + scene_.max[1]), t, d,
+                                               scene_.viscosity, constant_force_x(scene_));
+      prof.push_back({f.y[a], f.u[a], exact});
+    }
+    write_csv(scene_.directory + "/poiseuille_profile.csv", {"y", "u_sph", "u_exact"}, prof);
     case_metrics_.set("poiseuille_eps_max_tstar_0.5_2", eps_max_window_);
   }
   diagnostic_seconds_ += since(t0);

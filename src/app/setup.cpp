@@ -35,6 +35,7 @@ Model build_model(const Scene& scene) {
     if (scene.sides[s].kind == SideKind::periodic) periodic = true;
   }
   if (walls) model.terms.push_back(scene.free_slip_divergence ? "walls:ghost+free_slip_divergence" : "walls:ghost");
+  if (walls && scene.wall_velocity == "linear" && scene.dimension == 2) model.terms.push_back("walls:linear_velocity");
   if (periodic) model.terms.push_back("periodic:images");
   model.terms.push_back("kernel:" + scene.kernel);
   model.terms.push_back("integrator:erkstep:" + scene.integrator);

@@ -1,5 +1,7 @@
 #include "boundary/ghosts.hpp"
 
+#include <cmath>
+
 namespace arksph {
 
 namespace {
@@ -91,6 +93,10 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
         g.y.push_back(oy.coord);
         g.map.push_back(m);
         g.div_map.push_back(dm);
+        const bool one_wall = ox.wall != oy.wall;
+        const Option& w = ox.wall ? ox : oy;
+        g.wall_side.push_back(static_cast<std::int8_t>(one_wall ? w.side : -1));
+        g.wall_dist.push_back(one_wall ? std::abs(p[w.side / 2] - (w.side % 2 ? hi_[w.side / 2] : lo_[w.side / 2])) : 0.0);
       }
     }
   }

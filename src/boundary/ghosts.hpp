@@ -26,6 +26,8 @@ struct GhostSet {
   std::vector<double> x, y;           // positions
   std::vector<std::array<double, 4>> map;      // {s_x, s_y, b_x, b_y} for the viscous terms
   std::vector<std::array<double, 4>> div_map;  // same for the velocity divergence
+  std::vector<std::int8_t> wall_side;  // the one wall a mirror image crosses (0..3), -1 otherwise
+  std::vector<double> wall_dist;       // distance of the ghost behind that wall
   std::size_t size() const { return source.size(); }
   void clear() {
     source.clear();
@@ -33,6 +35,8 @@ struct GhostSet {
     y.clear();
     map.clear();
     div_map.clear();
+    wall_side.clear();
+    wall_dist.clear();
   }
 };
 

@@ -142,7 +142,7 @@ void read_scene_domain(const Section& root, Scene& s) {
 
 void read_boundary(const Section& root, Scene& s) {
   const Section b = root.section(
-      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence"});
+      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence", "wall_velocity"});
   const std::size_t dim = s.dimension;
   for (int i = 0; i < 4; ++i) {
     if (i >= 2 && dim == 1) {
@@ -175,6 +175,9 @@ void read_boundary(const Section& root, Scene& s) {
   s.corner_alpha = b.number("corner_alpha", s.corner_alpha);  // Szewc 2012 eq. 46
   b.require(s.corner_alpha >= -1 && s.corner_alpha <= 1, "corner_alpha", "in [-1, 1]", s.corner_alpha);
   s.free_slip_divergence = b.boolean("free_slip_divergence", s.free_slip_divergence);
+  // wall_velocity: tangential velocity of no-slip ghosts (Basa et al. 2008 §6.1.2): "mirror" (2w - u of
+  // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall)
+  s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear"}, s.wall_velocity);
   bool any_wall = false;
   for (std::size_t i = 0; i < 2 * dim; ++i) any_wall |= s.sides[i].kind == SideKind::wall;
   if (s.free_slip_divergence && !any_wall)

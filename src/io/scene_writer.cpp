@@ -61,7 +61,8 @@ std::string scene_to_toml(const Scene& s) {
       << ", slip = " << quote(side.slip == SlipKind::no_slip ? "no_slip" : "free_slip") << " }\n";
   }
   o << "corner_alpha = " << num(s.corner_alpha) << "\n"
-    << "free_slip_divergence = " << boolean(s.free_slip_divergence) << "\n\n";
+    << "free_slip_divergence = " << boolean(s.free_slip_divergence) << "\n"
+    << "wall_velocity = " << quote(s.wall_velocity) << "\n\n";
   o << "[fluid]\n"
     << "spacing = " << num(s.spacing) << "\n"
     << "density = " << num(s.density) << "\n"

@@ -10,7 +10,11 @@ namespace arksph {
 class BodyForce final : public Term {
  public:
   explicit BodyForce(const std::vector<std::string>& expr) {
-    for (const auto& e : expr) expr_.emplace_back(e, std::vector<std::string>{"x", "y", "t"});
+    for (const auto& e : expr) {
+      expr_.emplace_back(e, std::vector<std::string>{"x", "y", "t"});
+      constant_.push_back(expr_.back().is_constant());  // asked once: muParser re-parses to answer
+      value_.push_back(constant_.back() ? expr_.back().eval(0, 0, 0) : 0.0);
+    }
   }
   std::string name() const override { return "body_force"; }
   Stage stage() const override { return Stage::force; }
@@ -18,8 +22,8 @@ class BodyForce final : public Term {
     double* out[2] = {f.dudt.data(), f.dvdt.data()};
     for (int k = 0; k < f.dim; ++k) {
       const Expression& e = expr_[k];
-      if (e.is_constant()) {
-        const double g = e.eval(0, 0, 0);
+      if (constant_[k]) {
+        const double g = value_[k];
         for (std::size_t a = 0; a < f.n_real; ++a) out[k][a] += g;
       } else {
         for (std::size_t a = 0; a < f.n_real; ++a)
@@ -30,6 +34,8 @@ class BodyForce final : public Term {
 
  private:
   std::vector<Expression> expr_;
+  std::vector<bool> constant_;
+  std::vector<double> value_;
 };
 
 std::unique_ptr<Term> make_body_force(const std::vector<std::string>& expr) {

@@ -19,6 +19,8 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       terms_(std::move(terms)),
       ghost_builder_(scene, kernel_.radius()),
       nu_(scene.viscosity) {
+  if (scene.wall_velocity == "linear" && scene.dimension == 2)
+    linear_wall_ = std::make_unique<LinearWallVelocity>(scene, scene.spacing);
   for (int k = 0; k < scene.dimension; ++k) {
     periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
     lo_[k] = scene.min[k];
@@ -112,6 +114,7 @@ void RhsEvaluator::refresh_ghosts() {
     }
     f.m[i] = f.m[s];
   }
+  if (linear_wall_) linear_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
   f.nu.assign(f.n_all, nu_);
 }
 

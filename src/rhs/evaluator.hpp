@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "boundary/WallVelocity_Linear_Basa2008.hpp"
 #include "boundary/ghosts.hpp"
 #include "core/particles.hpp"
 #include "kernels/kernel.hpp"
@@ -49,6 +50,7 @@ class RhsEvaluator {
   std::vector<std::unique_ptr<Term>> terms_;
   GhostBuilder ghost_builder_;
   GhostSet ghosts_;
+  std::unique_ptr<LinearWallVelocity> linear_wall_;  // only with boundary.wall_velocity = "linear"
   CellList cells_;
   FluidFields fields_;
   double nu_;

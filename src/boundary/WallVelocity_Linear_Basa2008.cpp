@@ -1,0 +1,50 @@
+#include "boundary/WallVelocity_Linear_Basa2008.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace arksph {
+
+LinearWallVelocity::LinearWallVelocity(const Scene& scene, double dx) : scene_(scene), dx_(dx) {}
+
+void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
+                               double* v) const {
+  const double* pos[2] = {x, y};
+  double* vel[2] = {u, v};
+  for (int side = 0; side < 4; ++side) {
+    const SideSpec& s = scene_.sides[side];
+    if (s.kind != SideKind::wall || s.slip != SlipKind::no_slip) continue;
+    const int k = side / 2, t = 1 - k;  // normal and tangential axes
+    const double plane = side % 2 ? scene_.max[k] : scene_.min[k];
+    const double lo_t = scene_.min[t], len_t = scene_.max[t] - scene_.min[t];
+    const long bins = std::max(1L, std::lround(len_t / dx_));
+    const bool periodic_t = scene_.sides[2 * t].kind == SideKind::periodic;
+    auto bin_of = [&](double c) {
+      long b = static_cast<long>(std::floor((c - lo_t) / dx_));
+      if (periodic_t) b = ((b % bins) + bins) % bins;
+      return std::clamp(b, 0L, bins - 1);
+    };
+    // The fluid particle nearest to the wall in each tangential bin.
+    nearest_.assign(static_cast<std::size_t>(bins), -1);
+    std::vector<double> best(static_cast<std::size_t>(bins), 2.0 * dx_);
+    for (std::size_t a = 0; a < n_real; ++a) {
+      const double d = std::abs(pos[k][a] - plane);
+      const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
+      if (d < best[b] && d > 1e-6 * dx_) {
+        best[b] = d;
+        nearest_[b] = static_cast<long>(a);
+      }
+    }
+    const double w_t = s.velocity[t];
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (g.wall_side[i] != side) continue;
+      const std::size_t gi = n_real + i;
+      const long a = nearest_[static_cast<std::size_t>(bin_of(pos[t][gi]))];
+      if (a < 0) continue;  // no fluid near this stretch of wall: keep the mirror value
+      const double d_near = std::abs(pos[k][a] - plane);
+      vel[t][gi] = w_t - g.wall_dist[i] / d_near * (vel[t][a] - w_t);
+    }
+  }
+}
+
+}  // namespace arksph

@@ -268,7 +268,9 @@ TEST_CASE("neighbors: periodic unit box through ghost images equals the minimum-
         got.push_back({b, rx, ry, r2, w, f});
       });
       std::sort(got.begin(), got.end());
-      // Brute force, minimum image.
+      // Brute force, minimum image. (A pair within ~1e-16 of the cut-off could fall on different sides
+    // of it in the two computations; with random points this has probability ~1e-13 and the seed is
+    // fixed, so the exact set comparison is deterministic.)
       std::vector<Found> expect;
       for (std::size_t b = 0; b < n; ++b) {
         if (b == a) continue;
@@ -300,4 +302,22 @@ TEST_CASE("neighbors: periodic unit box through ghost images equals the minimum-
     CHECK(bad_values == 0);
     CHECK(total > n * 5);
   }
+}
+
+// Known defect (reported, not fixed here): CellList::build with n = 0 and y != nullptr computes the
+// y extent as (-DBL_MAX) - DBL_MAX = -inf and converts it to long (undefined behaviour); on x86-64
+// this gives LONG_MIN, the cell count becomes negative -> huge size_t and start_.assign throws
+// std::length_error. The 1D path resets xmin/xmax for n = 0 but not ymin/ymax. Marked may_fail so
+// that it documents the defect without breaking the suite; it passes once build() handles n = 0.
+TEST_CASE("neighbors: an empty point set gives no pairs (2D and 1D)" * doctest::may_fail()) {
+  const double dummy = 0.0;
+  const Kernel k = make_kernel("wendland_quintic", 0.05, 2);
+  CellList cells;
+  PairList pairs;
+  CHECK_NOTHROW(cells.build(&dummy, nullptr, 0, k.radius()));
+  CHECK_NOTHROW(build_pairs(cells, k, &dummy, nullptr, 0, pairs));
+  CHECK(pairs.count.empty());
+  CHECK_NOTHROW(cells.build(&dummy, &dummy, 0, k.radius()));
+  CHECK_NOTHROW(build_pairs(cells, k, &dummy, &dummy, 0, pairs));
+  CHECK(pairs.count.empty());
 }

@@ -57,6 +57,7 @@ struct Scene {
   std::string viscosity_model = "morris";
   double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
   double tait_gamma = 7.0;             // C&R eq. 7
+  double background_pressure = 0.0;    // added to the Tait pressure (Morris et al. 1997); keeps p > 0 near walls
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";

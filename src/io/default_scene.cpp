@@ -49,6 +49,7 @@ h_over_dx = 2.0                # smoothing length h / dx, in [0.5, 4]
 viscosity_model = "morris"     # "direct" | "two_pass" | "violeau" | "cleary" | "morris"
 sound_speed = 10.0             # WCSPH sound speed c0 (>= 0; 0: the documented default); wcsph only
 tait_gamma = 7.0               # exponent of the Tait equation of state (>= 1), Cummins & Rudman eq. 7
+background_pressure = 0.0      # constant added to the Tait pressure (>= 0; Morris et al. 1997)
 density_mode = "continuity"    # "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
 pressure_gradient = "colagrossi"   # "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
 density_correction = "none"    # "none" | "pozorski_wawrenczuk" (projection schemes only)

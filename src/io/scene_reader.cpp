@@ -220,7 +220,7 @@ void read_fluid(const Section& root, Scene& s) {
 
 void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
-                                            "sound_speed", "tait_gamma", "density_mode",
+                                            "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
@@ -231,6 +231,8 @@ void read_method(const Section& root, Scene& s) {
   m.require(s.sound_speed >= 0, "sound_speed", ">= 0", s.sound_speed);
   s.tait_gamma = m.number("tait_gamma", s.tait_gamma);  // Tait exponent (C&R eq. 7)
   m.require(s.tait_gamma >= 1, "tait_gamma", ">= 1", s.tait_gamma);
+  s.background_pressure = m.number("background_pressure", s.background_pressure);  // added to Tait p
+  m.require(s.background_pressure >= 0, "background_pressure", ">= 0", s.background_pressure);
   s.density_mode = m.registered("density_mode", "density_mode", s.density_mode);
   s.pressure_gradient = m.registered("pressure_gradient", "pressure_gradient", s.pressure_gradient);
   s.density_correction = m.registered("density_correction", "density_correction", s.density_correction);

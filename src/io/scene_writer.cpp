@@ -81,6 +81,7 @@ std::string scene_to_toml(const Scene& s) {
     << "viscosity_model = " << quote(s.viscosity_model) << "\n"
     << "sound_speed = " << num(s.sound_speed) << "\n"
     << "tait_gamma = " << num(s.tait_gamma) << "\n"
+    << "background_pressure = " << num(s.background_pressure) << "\n"
     << "density_mode = " << quote(s.density_mode) << "\n"
     << "pressure_gradient = " << quote(s.pressure_gradient) << "\n"
     << "density_correction = " << quote(s.density_correction) << "\n\n";

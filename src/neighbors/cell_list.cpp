@@ -24,7 +24,7 @@ void CellList::build(const double* x, const double* y, std::size_t n, double rad
       ymax = std::max(ymax, y[i]);
     }
   }
-  if (n == 0) xmin = xmax = 0;
+  if (n == 0) xmin = xmax = ymin = ymax = 0;
   inv_side_ = 1.0 / radius;
   x0_ = xmin;
   y0_ = ymin;

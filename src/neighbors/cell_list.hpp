@@ -30,7 +30,11 @@ class CellList {
   }
 
  private:
-  long cell_coord(double p, double p0) const { return static_cast<long>((p - p0) * inv_side_); }
+  // Clamped, so that a point far outside (or NaN) cannot index outside the grid.
+  long cell_coord(double p, double p0) const {
+    const double c = (p - p0) * inv_side_;
+    return c >= 0 && c < 1e9 ? static_cast<long>(c) : 0;
+  }
   bool two_d_ = true;
   double x0_ = 0, y0_ = 0, inv_side_ = 1, r2_ = 0;
   long nx_ = 1, ny_ = 1;

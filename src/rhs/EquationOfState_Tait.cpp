@@ -1,5 +1,6 @@
 // Tait equation of state, Cummins & Rudman 1999 eq. 7 (Szewc et al. 2012 eq. 26):
-//   p = c^2 rho0 / gamma * ((rho / rho0)^gamma - 1),  rho0 the reference density of the phase.
+//   p = c^2 rho0 / gamma * ((rho / rho0)^gamma - 1) + p_b,  rho0 the reference density of the phase,
+// p_b an optional background pressure (Morris et al. 1997) that keeps p > 0 against tensile clumping.
 #include <cmath>
 
 #include "rhs/terms.hpp"
@@ -8,7 +9,8 @@ namespace arksph {
 
 class EquationOfStateTait final : public Term {
  public:
-  EquationOfStateTait(double sound_speed, double gamma) : c2_(sound_speed * sound_speed), gamma_(gamma) {}
+  EquationOfStateTait(double sound_speed, double gamma, double background)
+      : c2_(sound_speed * sound_speed), gamma_(gamma), background_(background) {}
   std::string name() const override { return "eos:tait"; }
   Stage stage() const override { return Stage::pressure; }
   void apply(FluidFields& f) const override {
@@ -16,16 +18,16 @@ class EquationOfStateTait final : public Term {
     for (std::size_t a = 0; a < f.n_real; ++a) {
       const double ratio = f.rho[a] / f.rho0[a];
       const double stiffness = c2_ * f.rho0[a] / gamma_;
-      f.p[a] = stiffness * (std::pow(ratio, gamma_) - 1.0);
+      f.p[a] = stiffness * (std::pow(ratio, gamma_) - 1.0) + background_;
     }
   }
 
  private:
-  double c2_, gamma_;
+  double c2_, gamma_, background_;
 };
 
-std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma) {
-  return std::make_unique<EquationOfStateTait>(sound_speed, gamma);
+std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma, double background) {
+  return std::make_unique<EquationOfStateTait>(sound_speed, gamma, background);
 }
 
 }  // namespace arksph

@@ -10,7 +10,7 @@
 namespace arksph {
 
 std::unique_ptr<Term> make_density_summation();
-std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma);
+std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma, double background);
 std::unique_ptr<Term> make_continuity();
 std::unique_ptr<Term> make_pressure_gradient_colagrossi();
 std::unique_ptr<Term> make_pressure_gradient_monaghan();

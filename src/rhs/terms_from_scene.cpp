@@ -74,7 +74,7 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
   const bool wcsph = scene.scheme == "wcsph";
   if (scene.density_mode == "summation") terms.push_back(make_density_summation());
   if (wcsph) {
-    terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma));
+    terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma, scene.background_pressure));
     terms.push_back(make_named(pressure_gradient_table(), scene.pressure_gradient));
     if (scene.density_mode == "continuity") terms.push_back(make_continuity());
   }

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -21,7 +22,10 @@ struct Outcome {
 
 // Runs the arksph binary with arguments; captures stderr; stdout is discarded.
 Outcome run_arksph(const std::string& args) {
-  const std::string err_file = fs::temp_directory_path() / "arksph_cli_stderr.txt";
+  // Unique per process and call: ctest runs test cases in parallel processes.
+  static int calls = 0;
+  const std::string err_file = fs::temp_directory_path() / ("arksph_cli_stderr_" + std::to_string(getpid()) + "_" +
+                                                            std::to_string(calls++) + ".txt");
   const std::string cmd = std::string(ARKSPH_BINARY) + " " + args + " >/dev/null 2>" + err_file;
   const int status = std::system(cmd.c_str());
   Outcome o;
@@ -105,7 +109,7 @@ TEST_CASE("cli: an unwritable output directory exits 2 naming output.directory")
 }
 
 TEST_CASE("cli: list names every registered family") {
-  const std::string out_file = (fs::temp_directory_path() / "arksph_list.txt").string();
+  const std::string out_file = (fs::temp_directory_path() / ("arksph_list_" + std::to_string(getpid()) + ".txt")).string();
   REQUIRE(std::system((std::string(ARKSPH_BINARY) + " list >" + out_file).c_str()) == 0);
   const std::string text = read_file(out_file);
   for (const char* name : {"wcsph", "cubic_spline", "quartic_spline", "wendland_quintic", "quintic_spline", "morris",

@@ -1,0 +1,8 @@
+#!/bin/sh
+# Installs the Debian packages (if missing), configures a Release build in build/ and compiles it.
+# The binary ends up at build/arksph; the tests at build/tests/arksph_tests.
+set -eu
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"

@@ -79,6 +79,17 @@ ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, doubl
   mem_ = ERKStepCreate(&ErkIntegrator::rhs_cb, t0, y_, ctx_);
   if (!mem_) throw NumericalFailure("ARKODE: ERKStepCreate failed");
   check(ERKStepSetUserData(mem_, this), "ERKStepSetUserData");
+  // ARKODE's messages are kept, not printed: a failure then reports them in its one-line diagnosis.
+  check(ERKStepSetErrHandlerFn(
+            mem_,
+            [](int, const char*, const char* function, char* msg, void* self) {
+              std::string m = std::string(function) + ": " + msg;
+              for (char& c : m)
+                if (c == '\n') c = ' ';
+              static_cast<ErkIntegrator*>(self)->last_message_ = m;
+            },
+            this),
+        "ERKStepSetErrHandlerFn");
   ARKodeButcherTable B = load_table(opt.table);
   if (!B) throw InputError("unknown ARKODE table '" + opt.table + "'");
   const int flag = ERKStepSetTable(mem_, B);
@@ -130,7 +141,7 @@ double ErkIntegrator::evolve_to(double tout) {
   const int flag = ERKStepEvolve(mem_, tout, y_, &t_, ARK_NORMAL);
   if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
                                        " with flag " + std::to_string(flag) + " (" +
-                                       ERKStepGetReturnFlagName(flag) + ")");
+                                       ERKStepGetReturnFlagName(flag) + "; " + last_message_ + ")");
   return t_;
 }
 
@@ -139,7 +150,7 @@ double ErkIntegrator::step(double tstop) {
   const int flag = ERKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP);
   if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
                                        " with flag " + std::to_string(flag) + " (" +
-                                       ERKStepGetReturnFlagName(flag) + ")");
+                                       ERKStepGetReturnFlagName(flag) + "; " + last_message_ + ")");
   return t_;
 }
 

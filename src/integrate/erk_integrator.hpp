@@ -69,6 +69,7 @@ class ErkIntegrator {
   std::size_t n_;
   double t_;
   bool workaround_ = false;
+  std::string last_message_;  // last ARKODE warning or error
 };
 
 }  // namespace arksph

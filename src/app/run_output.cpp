@@ -111,7 +111,8 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   output_seconds_ += since(t0);
 }
 
-void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals) {
+void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
+                       long wall_reflections, long neighbor_rebuilds) {
   const RhsTiming& rt = model_.rhs->timing();
   Json j = Json::object();
   j.set("scene", scene_.name).set("scheme", scene_.scheme);
@@ -119,6 +120,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("final_time", last_t_).set("steps", stats.steps).set("rhs_evals", stats.rhs_evals);
   j.set("diagnostic_evals", diag_evals).set("step_attempts", stats.attempts);
   j.set("error_test_failures", stats.error_test_fails);
+  j.set("wall_reflections", wall_reflections).set("neighbor_rebuilds", neighbor_rebuilds);
   j.set("wall_seconds", wall_seconds).set("status", result.exit_code == 0 ? "ok" : "failed");
   if (result.exit_code != 0) j.set("failure", result.message);
   j.set("frames", frames_);

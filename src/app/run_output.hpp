@@ -20,7 +20,8 @@ class RunOutput {
   // Refreshes the fields at (t, y), computes the metrics, writes a frame and a CSV row.
   void write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats);
   // Writes summary.json (also after a failure: status "failed" with the diagnosis).
-  void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals);
+  void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
+              long wall_reflections, long neighbor_rebuilds);
 
  private:
   std::vector<std::string> csv_columns() const;

@@ -13,6 +13,7 @@
 #include "app/run_output.hpp"
 #include "app/setup.hpp"
 #include "app/state_check.hpp"
+#include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
 #include "diagnostics/flow_metrics.hpp"
 
@@ -69,6 +70,8 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   if (integrator.workaround_installed()) out.add_term("erkstep:fsal_bug_workaround");
 
   StateChecker checker(scene, model);
+  const WallReflection reflection(scene, layout);
+  long reflections = 0;
   Progress progress(scene.end, options.quiet);
   long diag_evals = rhs.evaluations() - diag_evals_before + 1;
 
@@ -84,7 +87,14 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
       while (t < t_next) {
         t = integrator.step(t_next);
         const ErkStats st = integrator.stats();
+        if (const long r = reflection.apply(integrator.state())) {  // sync point: re-initialise
+          reflections += r;
+          integrator.reset(t);
+        }
         checker.check(t, integrator.state());
+        if (st.steps >= scene.max_steps)
+          throw NumericalFailure("time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " +
+                                 std::to_string(t) + " before time.end");
         progress.step(t, st.steps, st.last_step);
       }
       const long before = rhs.evaluations();
@@ -101,7 +111,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   progress.finish();
   const ErkStats st = integrator.stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
-  out.finish(result, st, wall, diag_evals);
+  out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
   return result;
 }
 

@@ -38,7 +38,8 @@ GhostBuilder::GhostBuilder(const Scene& scene, double support_radius)
     if (sides_[s].kind == SideKind::wall) any_wall_ = true;
 }
 
-void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostSet& g) const {
+void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostSet& g, double skin) const {
+  const double reach = radius_ + skin;
   g.clear();
   for (std::size_t i = 0; i < n; ++i) {
     const double p[2] = {x[i], y ? y[i] : 0.0};
@@ -48,25 +49,30 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
       Map map, div_map;
       bool wall;
       int side;
+      double a = 1.0, b = 0.0;  // coordinate map c' = a c + b
     };
     Option opts[2][3];
     int nopt[2] = {1, 1};
-    for (int k = 0; k < 2; ++k) opts[k][0] = {p[k], identity, identity, false, -1};
+    for (int k = 0; k < 2; ++k) opts[k][0] = {p[k], identity, identity, false, -1, 1.0, 0.0};
     for (int k = 0; k < dim_; ++k) {
       for (int end = 0; end < 2; ++end) {
         const int side = 2 * k + end;  // left,right,bottom,top
         const double dist = end == 0 ? p[k] - lo_[k] : hi_[k] - p[k];
-        if (dist >= radius_) continue;
+        if (dist >= reach) continue;
         const SideSpec& s = sides_[side];
         Option o;
         o.side = side;
         if (s.kind == SideKind::periodic) {
           o.coord = end == 0 ? p[k] + len_[k] : p[k] - len_[k];
+          o.a = 1.0;
+          o.b = end == 0 ? len_[k] : -len_[k];
           o.map = o.div_map = identity;
           o.wall = false;
         } else {
           const double plane = end == 0 ? lo_[k] : hi_[k];
           o.coord = 2 * plane - p[k];
+          o.a = -1.0;
+          o.b = 2 * plane;
           o.map = wall_map(s, k, false);
           o.div_map = wall_map(s, k, free_slip_div_);
           o.wall = true;
@@ -95,9 +101,29 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
         g.div_map.push_back(dm);
         const bool one_wall = ox.wall != oy.wall;
         const Option& w = ox.wall ? ox : oy;
+        g.place.push_back({ox.a, oy.a, ox.b, oy.b});
         g.wall_side.push_back(static_cast<std::int8_t>(one_wall ? w.side : -1));
         g.wall_dist.push_back(one_wall ? std::abs(p[w.side / 2] - (w.side % 2 ? hi_[w.side / 2] : lo_[w.side / 2])) : 0.0);
       }
+    }
+  }
+}
+
+}  // namespace arksph
+
+namespace arksph {
+
+void GhostBuilder::update(const double* x, const double* y, GhostSet& g) const {
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const auto& pl = g.place[i];
+    const std::uint32_t s = g.source[i];
+    g.x[i] = pl[0] * x[s] + pl[2];
+    g.y[i] = y ? pl[1] * y[s] + pl[3] : 0.0;
+    const int side = g.wall_side[i];
+    if (side >= 0) {
+      const int k = side / 2;
+      const double c = k == 0 ? x[s] : y[s];
+      g.wall_dist[i] = std::abs(c - (side % 2 ? hi_[k] : lo_[k]));
     }
   }
 }

@@ -28,6 +28,7 @@ struct GhostSet {
   std::vector<std::array<double, 4>> div_map;  // same for the velocity divergence
   std::vector<std::int8_t> wall_side;  // the one wall a mirror image crosses (0..3), -1 otherwise
   std::vector<double> wall_dist;       // distance of the ghost behind that wall
+  std::vector<std::array<double, 4>> place;  // position map: x' = place[0] x + place[2], y' = place[1] y + place[3]
   std::size_t size() const { return source.size(); }
   void clear() {
     source.clear();
@@ -37,6 +38,7 @@ struct GhostSet {
     div_map.clear();
     wall_side.clear();
     wall_dist.clear();
+    place.clear();
   }
 };
 
@@ -45,8 +47,11 @@ class GhostBuilder {
   GhostBuilder(const Scene& scene, double support_radius);
   bool active() const { return any_side_; }
   bool has_walls() const { return any_wall_; }
-  // Images of the n real particles at (x, y) (y null in 1D).
-  void build(const double* x, const double* y, std::size_t n, GhostSet& ghosts) const;
+  // Images of the n real particles at (x, y) (y null in 1D) lying within the support radius plus
+  // `skin` of a side. A larger skin lets the set stay valid while particles move (see update).
+  void build(const double* x, const double* y, std::size_t n, GhostSet& ghosts, double skin = 0.0) const;
+  // Moves existing ghosts with their sources (positions and wall distances), same images.
+  void update(const double* x, const double* y, GhostSet& ghosts) const;
 
  private:
   // One candidate operation along one axis: shift (periodic) or reflection (wall).

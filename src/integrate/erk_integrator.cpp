@@ -156,6 +156,11 @@ double ErkIntegrator::step(double tstop) {
 
 double* ErkIntegrator::state() { return N_VGetArrayPointer(y_); }
 
+void ErkIntegrator::reset(double t) {
+  check(ERKStepReset(mem_, t, y_), "ERKStepReset");
+  t_ = t;
+}
+
 ErkStats ErkIntegrator::stats() const {
   ErkStats s;
   long nst = 0, nacc = 0, natt = 0, nfe = 0, netf = 0;

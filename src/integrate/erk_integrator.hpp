@@ -54,6 +54,8 @@ class ErkIntegrator {
   // One internal step, not past tstop.
   double step(double tstop);
   double* state();
+  // Re-initialises the method at (t, state()) after the state was changed outside ARKODE.
+  void reset(double t);
   std::size_t size() const { return n_; }
   ErkStats stats() const;
   bool workaround_installed() const { return workaround_; }

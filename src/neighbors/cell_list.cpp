@@ -94,3 +94,72 @@ void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, c
 }
 
 }  // namespace arksph
+
+namespace arksph {
+
+void build_candidates(const CellList& cells, const double* x, const double* y, std::size_t n_real,
+                      CandidateList& cand) {
+  cand.n_real = n_real;
+  cand.count.assign(n_real, 0);
+  if (cand.stride == 0) cand.stride = 32;
+  for (;;) {
+    if (cand.j.size() < n_real * cand.stride) cand.j.resize(n_real * cand.stride);
+    std::size_t overflow = 0;
+#pragma omp parallel for schedule(static) reduction(max : overflow)
+    for (std::size_t a = 0; a < n_real; ++a) {
+      const std::size_t base = a * cand.stride;
+      std::size_t k = 0;
+      cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) {
+        if (b == a) return;
+        if (k < cand.stride) cand.j[base + k] = b;
+        ++k;
+      });
+      cand.count[a] = static_cast<std::uint32_t>(std::min(k, cand.stride));
+      overflow = std::max(overflow, k);
+    }
+    if (overflow <= cand.stride) return;
+    cand.stride = overflow + overflow / 4 + 4;
+  }
+}
+
+void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
+                           PairList& pairs) {
+  const std::size_t n_real = cand.n_real, stride = cand.stride;
+  pairs.n_real = n_real;
+  pairs.stride = stride;
+  pairs.count.assign(n_real, 0);
+  const std::size_t cap = n_real * stride;
+  if (pairs.j.size() < cap) {
+    pairs.j.resize(cap);
+    pairs.rx.resize(cap);
+    pairs.ry.resize(cap);
+    pairs.r2.resize(cap);
+    pairs.w.resize(cap);
+    pairs.f.resize(cap);
+  }
+  const double r_max2 = kernel.radius() * kernel.radius();
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n_real; ++a) {
+    const std::size_t base = a * stride;
+    std::size_t k = base;
+    const double xa = x[a], ya = y ? y[a] : 0.0;
+    for (std::size_t c = base; c < base + cand.count[a]; ++c) {
+      const std::uint32_t b = cand.j[c];
+      const double dx = xa - x[b], dy = y ? ya - y[b] : 0.0;
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= r_max2) continue;
+      double w, f;
+      kernel.eval(std::sqrt(r2), w, f);
+      pairs.j[k] = b;
+      pairs.rx[k] = dx;
+      pairs.ry[k] = dy;
+      pairs.r2[k] = r2;
+      pairs.w[k] = w;
+      pairs.f[k] = f;
+      ++k;
+    }
+    pairs.count[a] = static_cast<std::uint32_t>(k - base);
+  }
+}
+
+}  // namespace arksph

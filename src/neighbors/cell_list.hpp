@@ -63,3 +63,22 @@ void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, c
                  std::size_t n_real, PairList& pairs);
 
 }  // namespace arksph
+
+namespace arksph {
+
+// Verlet candidates: for each real particle, the points within radius + skin at the last rebuild.
+// While no particle has moved more than skin / 2 since then, every pair closer than the radius is
+// among the candidates, so the pair list is refreshed from them without a cell search.
+struct CandidateList {
+  std::size_t n_real = 0, stride = 0;
+  std::vector<std::uint32_t> count, j;
+};
+
+// cells must have been built with radius + skin over all points.
+void build_candidates(const CellList& cells, const double* x, const double* y, std::size_t n_real,
+                      CandidateList& cand);
+// The pairs among the candidates closer than the kernel radius, with kernel values (as build_pairs).
+void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
+                           PairList& pairs);
+
+}  // namespace arksph

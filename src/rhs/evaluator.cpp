@@ -19,6 +19,8 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       terms_(std::move(terms)),
       ghost_builder_(scene, kernel_.radius()),
       nu_(scene.viscosity) {
+  // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
+  skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
     linear_wall_ = std::make_unique<LinearWallVelocity>(scene, scene.spacing);
   for (int k = 0; k < scene.dimension; ++k) {
@@ -85,11 +87,15 @@ void RhsEvaluator::load_state(double t, const double* y) {
   f.p.assign(n, 0.0);
 }
 
-void RhsEvaluator::refresh_ghosts() {
+void RhsEvaluator::refresh_ghosts(bool rebuild) {
   FluidFields& f = fields_;
   const std::size_t n = layout_.n;
   const bool two_d = layout_.dim == 2;
-  ghost_builder_.build(f.x.data(), two_d ? f.y.data() : nullptr, n, ghosts_);
+  if (rebuild) {
+    ghost_builder_.build(f.x.data(), two_d ? f.y.data() : nullptr, n, ghosts_, skin_);
+  } else {
+    ghost_builder_.update(f.x.data(), two_d ? f.y.data() : nullptr, ghosts_);
+  }
   const std::size_t ng = ghosts_.size();
   f.n_all = n + ng;
   f.x.insert(f.x.end(), ghosts_.x.begin(), ghosts_.x.end());
@@ -118,6 +124,18 @@ void RhsEvaluator::refresh_ghosts() {
   f.nu.assign(f.n_all, nu_);
 }
 
+bool RhsEvaluator::needs_rebuild() const {
+  const std::size_t n = layout_.n;
+  if (ref_x_.size() != n) return true;
+  const double limit2 = 0.25 * skin_ * skin_;  // moved more than skin / 2
+  const FluidFields& f = fields_;
+  for (std::size_t a = 0; a < n; ++a) {
+    const double dx = f.x[a] - ref_x_[a], dy = layout_.dim == 2 ? f.y[a] - ref_y_[a] : 0.0;
+    if (dx * dx + dy * dy > limit2) return true;
+  }
+  return false;
+}
+
 void RhsEvaluator::copy_to_ghosts(std::vector<double>& field) {
   const std::size_t n = layout_.n;
   field.resize(fields_.n_all);
@@ -133,9 +151,16 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
 
   auto t0 = clock::now();
   load_state(t, y);
-  refresh_ghosts();
-  cells_.build(f.x.data(), two_d ? f.y.data() : nullptr, f.n_all, kernel_.radius());
-  build_pairs(cells_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, n, f.pairs);
+  const bool rebuild = needs_rebuild();
+  refresh_ghosts(rebuild);
+  if (rebuild) {
+    cells_.build(f.x.data(), two_d ? f.y.data() : nullptr, f.n_all, kernel_.radius() + skin_);
+    build_candidates(cells_, f.x.data(), two_d ? f.y.data() : nullptr, n, candidates_);
+    ref_x_.assign(f.x.begin(), f.x.begin() + n);
+    if (two_d) ref_y_.assign(f.y.begin(), f.y.begin() + n);
+    ++rebuilds_;
+  }
+  pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
   timing_.neighbors += seconds_since(t0);
 
   t0 = clock::now();

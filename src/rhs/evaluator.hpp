@@ -37,11 +37,13 @@ class RhsEvaluator {
   std::vector<std::string> term_names() const;
   double max_acceleration() const { return max_accel_; }  // from the last eval, real particles
   long evaluations() const { return evals_; }
+  long neighbor_rebuilds() const { return rebuilds_; }
   const RhsTiming& timing() const { return timing_; }
 
  private:
   void load_state(double t, const double* y);
-  void refresh_ghosts();
+  void refresh_ghosts(bool rebuild);
+  bool needs_rebuild() const;
   void copy_to_ghosts(std::vector<double>& field);
 
   StateLayout layout_;
@@ -52,6 +54,10 @@ class RhsEvaluator {
   GhostSet ghosts_;
   std::unique_ptr<LinearWallVelocity> linear_wall_;  // only with boundary.wall_velocity = "linear"
   CellList cells_;
+  CandidateList candidates_;
+  std::vector<double> ref_x_, ref_y_;  // real positions at the last candidate rebuild
+  double skin_ = 0;
+  long rebuilds_ = 0;
   FluidFields fields_;
   double nu_;
   bool periodic_[2] = {false, false};

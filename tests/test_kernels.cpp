@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "kernels/kernel.hpp"
-#include "kernels/kernel_shapes.hpp"
 
 using namespace arksph;
 
@@ -288,16 +287,15 @@ TEST_CASE("kernel: lattice sums, zero gradient sum and the first-moment identity
 
 TEST_CASE("kernel: the quartic spline's printed 2D constant 0.0255 is a rounding of 96/(1199 pi)") {
   // Integrate the unnormalised bracket of C&R eq. 6 over the plane: 2 pi int q f(q) dq = 1199 pi / 96.
-  const auto shape = make_quartic_spline();
   const double exact = 96.0 / (1199.0 * kPi);
-  CHECK(shape->sigma(2) == doctest::Approx(exact).epsilon(1e-15));
-  CHECK(shape->sigma(1) == doctest::Approx(1.0 / 24.0).epsilon(1e-15));
+  CHECK(QuarticSpline::sigma(2) == doctest::Approx(exact).epsilon(1e-15));
+  CHECK(QuarticSpline::sigma(1) == doctest::Approx(1.0 / 24.0).epsilon(1e-15));
   double area = 0.0, line = 0.0;
-  const auto knots = knots_in_q(shape->support());
+  const auto knots = knots_in_q(QuarticSpline::support());
   for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
     auto fq = [&](double q) {
       double f, df;
-      shape->eval(q, f, df);
+      QuarticSpline::eval(q, f, df);
       return f;
     };
     area += 2.0 * kPi * simpson([&](double q) { return q * fq(q); }, knots[i], knots[i + 1], 4000);

@@ -4,22 +4,25 @@
 
 namespace arksph {
 
-Kernel::Kernel(std::string name, std::shared_ptr<const KernelShape> shape, double h, int dimension)
-    : name_(std::move(name)), shape_(std::move(shape)), h_(h), inv_h_(1.0 / h), dim_(dimension) {
-  norm_ = shape_->sigma(dimension) / std::pow(h, dimension);
-  radius_ = shape_->support() * h;
+namespace {
+template <class Shape>
+void shape_constants(int dimension, double& sigma, double& support) {
+  sigma = Shape::sigma(dimension);
+  support = Shape::support();
 }
+}  // namespace
 
-double Kernel::W(double r) const {
-  double f, df;
-  shape_->eval(r * inv_h_, f, df);
-  return norm_ * f;
-}
-
-double Kernel::dWdr(double r) const {
-  double f, df;
-  shape_->eval(r * inv_h_, f, df);
-  return norm_ * inv_h_ * df;
+Kernel::Kernel(std::string name, KernelShapeId shape, double h, int dimension)
+    : name_(std::move(name)), shape_(shape), h_(h), inv_h_(1.0 / h), dim_(dimension) {
+  double sigma = 0, support = 0;
+  switch (shape) {
+    case KernelShapeId::cubic_spline: shape_constants<CubicSpline>(dimension, sigma, support); break;
+    case KernelShapeId::quartic_spline: shape_constants<QuarticSpline>(dimension, sigma, support); break;
+    case KernelShapeId::wendland_quintic: shape_constants<WendlandQuintic>(dimension, sigma, support); break;
+    case KernelShapeId::quintic_spline: shape_constants<QuinticSpline>(dimension, sigma, support); break;
+  }
+  norm_ = sigma / std::pow(h, dimension);
+  radius_ = support * h;
 }
 
 }  // namespace arksph

@@ -138,27 +138,35 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
     pairs.f.resize(cap);
   }
   const double r_max2 = kernel.radius() * kernel.radius();
+  // Raw pointers: the compiler need not reload the vectors' data after every store.
+  std::uint32_t* __restrict pj = pairs.j.data();
+  double* __restrict prx = pairs.rx.data();
+  double* __restrict pry = pairs.ry.data();
+  double* __restrict pr2 = pairs.r2.data();
+  double* __restrict pw = pairs.w.data();
+  double* __restrict pf = pairs.f.data();
+  std::uint32_t* __restrict pcount = pairs.count.data();
+  const std::uint32_t* cj = cand.j.data();
+  const std::uint32_t* ccount = cand.count.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n_real; ++a) {
     const std::size_t base = a * stride;
     std::size_t k = base;
     const double xa = x[a], ya = y ? y[a] : 0.0;
-    for (std::size_t c = base; c < base + cand.count[a]; ++c) {
-      const std::uint32_t b = cand.j[c];
+    // Pass 1: distances, compacted to the pairs inside the support (no kernel yet).
+    for (std::size_t c = base; c < base + ccount[a]; ++c) {
+      const std::uint32_t b = cj[c];
       const double dx = xa - x[b], dy = y ? ya - y[b] : 0.0;
       const double r2 = dx * dx + dy * dy;
-      if (r2 >= r_max2) continue;
-      double w, f;
-      kernel.eval(std::sqrt(r2), w, f);
-      pairs.j[k] = b;
-      pairs.rx[k] = dx;
-      pairs.ry[k] = dy;
-      pairs.r2[k] = r2;
-      pairs.w[k] = w;
-      pairs.f[k] = f;
-      ++k;
+      pj[k] = b;
+      prx[k] = dx;
+      pry[k] = dy;
+      pr2[k] = r2;
+      k += r2 < r_max2 ? 1 : 0;  // branch-free compaction
     }
-    pairs.count[a] = static_cast<std::uint32_t>(k - base);
+    pcount[a] = static_cast<std::uint32_t>(k - base);
+    // Pass 2: kernel values of the kept pairs.
+    for (std::size_t i = base; i < k; ++i) kernel.eval(std::sqrt(pr2[i]), pw[i], pf[i]);
   }
 }
 

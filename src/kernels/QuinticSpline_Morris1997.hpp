@@ -3,16 +3,16 @@
 //          (3-q)^5 - 6 (2-q)^5               (1 <= q < 2)
 //          (3-q)^5                           (2 <= q < 3)
 // 2D constant 7 / (478 pi) (Szewc eq. 7); 1D constant 1/120.
+#pragma once
 #include <numbers>
-
-#include "kernels/kernel_shapes.hpp"
 
 namespace arksph {
 
-struct QuinticSpline final : KernelShape {
-  double support() const override { return 3.0; }
-  double sigma(int d) const override { return d == 1 ? 1.0 / 120.0 : 7.0 / (478.0 * std::numbers::pi); }
-  void eval(double q, double& f, double& df) const override {
+// Header-only so that the pair loop can inline eval (kernels/kernel.hpp dispatches once per call).
+struct QuinticSpline {
+  static constexpr double support() { return 3.0; }
+  static double sigma(int d) { return d == 1 ? 1.0 / 120.0 : 7.0 / (478.0 * std::numbers::pi); }
+  static inline void eval(double q, double& f, double& df) {
     f = df = 0.0;
     if (q >= 3.0) return;
     auto add = [&](double c, double s) {  // c * s^5 and its q-derivative -5 c s^4
@@ -25,7 +25,5 @@ struct QuinticSpline final : KernelShape {
     if (q < 1.0) add(15.0, 1.0 - q);
   }
 };
-
-std::shared_ptr<const KernelShape> make_quintic_spline() { return std::make_shared<QuinticSpline>(); }
 
 }  // namespace arksph

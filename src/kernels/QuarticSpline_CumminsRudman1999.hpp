@@ -4,16 +4,16 @@
 //          (2.5-q)^4                                (1.5 <= q < 2.5)
 // The paper prints the 2D constant as 0.0255; the exact value is 96 / (1199 pi) = 0.025486...
 // The 1D constant is 1/24 (the integral of the bracket over the real line is 24).
+#pragma once
 #include <numbers>
-
-#include "kernels/kernel_shapes.hpp"
 
 namespace arksph {
 
-struct QuarticSpline final : KernelShape {
-  double support() const override { return 2.5; }
-  double sigma(int d) const override { return d == 1 ? 1.0 / 24.0 : 96.0 / (1199.0 * std::numbers::pi); }
-  void eval(double q, double& f, double& df) const override {
+// Header-only so that the pair loop can inline eval (kernels/kernel.hpp dispatches once per call).
+struct QuarticSpline {
+  static constexpr double support() { return 2.5; }
+  static double sigma(int d) { return d == 1 ? 1.0 / 24.0 : 96.0 / (1199.0 * std::numbers::pi); }
+  static inline void eval(double q, double& f, double& df) {
     f = df = 0.0;
     if (q >= 2.5) return;
     const double a = 2.5 - q;
@@ -31,7 +31,5 @@ struct QuarticSpline final : KernelShape {
     }
   }
 };
-
-std::shared_ptr<const KernelShape> make_quartic_spline() { return std::make_shared<QuarticSpline>(); }
 
 }  // namespace arksph

@@ -56,7 +56,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
                              last_.max_speed, last_.cv, last_.density_mean, last_.density_rms};
   if (scene_.ghia_re) {
     const GhiaErrors g = ghia_errors(f, scene_.ghia_re, scene_.min[0], scene_.min[1],
-                                     scene_.max[0] - scene_.min[0], lid_speed(scene_));
+                                     scene_.max[0] - scene_.min[0], lid_speed(scene_), scene_.spacing);
     row.insert(row.end(), {g.u_linf, g.u_rms, g.v_linf, g.v_rms});
     case_metrics_.set("ghia_u_linf", g.u_linf).set("ghia_u_rms", g.u_rms);
     case_metrics_.set("ghia_v_linf", g.v_linf).set("ghia_v_rms", g.v_rms);

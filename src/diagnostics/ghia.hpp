@@ -2,6 +2,7 @@
 #pragma once
 #include <vector>
 
+#include "kernels/kernel.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -13,13 +14,17 @@ struct GhiaErrors {
 };
 
 // Velocity at a point by a Shepard-normalised kernel interpolation over fluid particles only:
-//   u(r) = sum_b V_b u_b W(r - r_b) / sum_b V_b W(r - r_b),  V_b = m_b / rho_b.
-// Fluid only, because the no-slip ghosts carry 2w - u, which would pull the estimate towards w
-// twice near the wall; the Shepard denominator corrects the truncated support there instead.
-void shepard_velocity(const FluidFields& f, double px, double py, double& u, double& v);
+//   u(r) = sum_b V_b u_b W(r - r_b) / sum_b V_b W(r - r_b),  V_b = m_b / rho_b,
+// with the given interpolation kernel (independent of the simulation's kernel).
+void shepard_velocity(const FluidFields& f, const Kernel& w, double px, double py, double& u, double& v);
+
+// The interpolation used for Ghia comparisons: Wendland C2 with h = 1.3 dx over fluid particles, the
+// common choice of the peer measurements in PEERS.md, so that the figures compare directly.
+Kernel ghia_interpolation_kernel(double dx);
 
 // Compares with Ghia's table at Re (100 or 1000) for a cavity [x0, x0 + L] x [y0, y0 + L] with lid
 // speed U (velocities scaled by U, coordinates by L). The wall rows of the table are left out.
-GhiaErrors ghia_errors(const FluidFields& f, int re, double x0, double y0, double length, double lid_speed);
+GhiaErrors ghia_errors(const FluidFields& f, int re, double x0, double y0, double length, double lid_speed,
+                       double dx);
 
 }  // namespace arksph

@@ -39,6 +39,7 @@ RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options
 }
 
 std::vector<std::string> RunOutput::csv_columns() const {
+  // dt: the largest step taken since the previous row.
   std::vector<std::string> c = {"t", "dt", "steps", "kinetic_energy", "max_speed", "cv", "density_mean", "density_rms"};
   if (scene_.ghia_re) c.insert(c.end(), {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms"});
   if (scene_.poiseuille) c.insert(c.end(), {"tstar", "poiseuille_eps"});

@@ -84,9 +84,11 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     while (t < scene.end) {
       double t_next = scene.every > 0 ? frame * scene.every : scene.end;
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
+      double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
       while (t < t_next) {
         t = integrator.step(t_next);
         const ErkStats st = integrator.stats();
+        dt_max = std::max(dt_max, st.last_step);
         if (const long r = reflection.apply(integrator.state())) {  // sync point: re-initialise
           reflections += r;
           integrator.reset(t);
@@ -98,10 +100,11 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
         progress.step(t, st.steps, st.last_step);
       }
       const long before = rhs.evaluations();
-      out.write(t, integrator.state(), d0, integrator.stats());
+      ErkStats st = integrator.stats();
+      st.last_step = dt_max;
+      out.write(t, integrator.state(), d0, st);
       diag_evals += rhs.evaluations() - before;
-      const ErkStats st = integrator.stats();
-      progress.frame(t, st.steps, st.last_step);
+      progress.frame(t, st.steps, dt_max);
       ++frame;
     }
   } catch (const NumericalFailure& e) {

@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "app/interrupt.hpp"
 #include "app/simulation.hpp"
 #include "core/errors.hpp"
 #include "core/names.hpp"
 #include "integrate/erk_integrator.hpp"
+#include "io/checkpoint.hpp"
 #include "io/scene_reader.hpp"
 
 namespace {
@@ -23,12 +25,17 @@ const char* kUsage =
     "      --set overrides any scene key by its dotted path, e.g. --set time.end=2 --set method.kernel=cubic_spline\n"
     "      --out DIR writes the output there (same as --set output.directory=DIR)\n"
     "      --quiet   no progress line on stderr\n"
+    "  arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...]\n"
+    "      Continues the run saved in checkpoint FILE (e.g. --set time.end=10 to go further); the scene is the\n"
+    "      one stored in FILE with the --set overrides. Output continues in its directory (or --out DIR).\n"
     "  arksph list                 registered kernels, schemes, viscosity models, ARKODE tables, ...\n"
     "  arksph default-scene        prints the embedded default scene (a commented template of every key)\n"
     "  arksph --help | run --help  this text\n"
     "\n"
     "output (in the output directory): particles_NNNNNN.vtp + particles.pvd (ParaView), timeseries.csv,\n"
-    "summary.json. Exit codes: 0 finished, 2 bad input, 3 numerical failure (output so far stays valid).\n";
+    "summary.json, checkpoint.h5 (every output.checkpoint_every and at the end).\n"
+    "Exit codes: 0 finished, 2 bad input, 3 numerical failure (output so far stays valid),\n"
+    "130/143 stopped by SIGINT/SIGTERM (checkpoint.h5 written; continue with --restart).\n";
 
 std::string toml_quote(const std::string& s) {
   std::string q = "\"";
@@ -58,7 +65,7 @@ int cmd_list() {
 }
 
 int cmd_run(int argc, char** argv) {
-  std::string scene_path;
+  std::string scene_path, restart_path;
   std::vector<std::string> sets;
   arksph::RunOptions options;
   for (int i = 0; i < argc; ++i) {
@@ -70,6 +77,9 @@ int cmd_run(int argc, char** argv) {
       if (i + 1 >= argc) throw arksph::InputError(a + ": missing value");
       const std::string v = argv[++i];
       sets.push_back(a == "--set" ? v : "output.directory=" + toml_quote(v));
+    } else if (a == "--restart") {
+      if (i + 1 >= argc) throw arksph::InputError(a + ": missing checkpoint file");
+      restart_path = argv[++i];
     } else if (a.rfind("--set=", 0) == 0) {
       sets.push_back(a.substr(6));
     } else if (a == "--quiet" || a == "-q") {
@@ -82,11 +92,26 @@ int cmd_run(int argc, char** argv) {
       throw arksph::InputError(a + ": more than one scene file given");
     }
   }
-  const arksph::Scene scene = scene_path.empty()
-                                  ? arksph::read_scene_text(arksph::default_scene_toml(), "<embedded default>", sets)
-                                  : arksph::read_scene_file(scene_path, sets);
+  if (!restart_path.empty() && !scene_path.empty())
+    throw arksph::InputError(scene_path + ": give either a scene file or --restart FILE, not both");
+  arksph::Checkpoint checkpoint;  // --restart: the scene is the one stored in the checkpoint
+  if (!restart_path.empty()) {
+    checkpoint = arksph::read_checkpoint(restart_path);
+    options.restart = &checkpoint;
+    options.restart_path = restart_path;
+    std::printf("arksph: restart from %s at t = %.17g (step %ld)\n", restart_path.c_str(), checkpoint.time,
+                checkpoint.steps);
+  }
+  const arksph::Scene scene =
+      !restart_path.empty() ? arksph::read_scene_text(checkpoint.scene_toml, restart_path + " [scene_toml]", sets)
+      : scene_path.empty()  ? arksph::read_scene_text(arksph::default_scene_toml(), "<embedded default>", sets)
+                            : arksph::read_scene_file(scene_path, sets);
+  arksph::install_interrupt_handlers();
   const arksph::RunResult r = arksph::run_simulation(scene, options);
-  if (r.exit_code != 0) {
+  if (r.interrupted) {
+    std::fprintf(stderr, "arksph: %s; checkpoint written to %s (continue: arksph run --restart %s)\n",
+                 r.message.c_str(), r.checkpoint.c_str(), r.checkpoint.c_str());
+  } else if (r.exit_code != 0) {
     std::fprintf(stderr, "arksph: simulation failed: %s (output so far kept in %s)\n", r.message.c_str(),
                  scene.directory.c_str());
   } else {

@@ -100,7 +100,8 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     fr.y = f.dim == 2 ? f.y.data() : nullptr;
     fr.u = f.u.data();
     fr.v = f.dim == 2 ? f.v.data() : nullptr;
-    fr.pressure = f.p.data();
+    fr.pressure = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
+                                                                              : f.p.data();
     fr.density = f.rho.data();
     fr.mass = f.m.data();
     fr.id = model_.particles.id.data();
@@ -122,15 +123,28 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("diagnostic_evals", diag_evals).set("step_attempts", stats.attempts);
   j.set("error_test_failures", stats.error_test_fails);
   j.set("wall_reflections", wall_reflections).set("neighbor_rebuilds", neighbor_rebuilds);
-  j.set("wall_seconds", wall_seconds).set("status", result.exit_code == 0 ? "ok" : "failed");
+  j.set("wall_seconds", wall_seconds);
+  j.set("status", result.exit_code == 0 ? "ok" : result.interrupted ? "interrupted" : "failed");
   if (result.exit_code != 0) j.set("failure", result.message);
   j.set("frames", frames_);
   j.set("terms", Json(model_.terms));
   Json timing = Json::object();
-  timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", 0.0);
+  const double ppe = model_.projection ? model_.projection->stats().seconds : 0.0;
+  timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);
   timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
   // What is left: set-up, ARKODE's own vector work, state checks.
+  // What is left: set-up, ARKODE's own vector work, state checks. (ppe includes its own neighbour
+  // refresh, counted in neighbors and rhs too, so it is not subtracted.)
   timing.set("setup_and_integrator", wall_seconds - rt.neighbors - rt.terms - diagnostic_seconds_ - output_seconds_);
+  if (model_.projection) {
+    const ProjectionStats& ps = model_.projection->stats();
+    Json ppe_json = Json::object();
+    ppe_json.set("solver", model_.projection->solver_name()).set("solves", ps.solves);
+    ppe_json.set("solve_seconds", ps.solve_seconds).set("seconds_per_solve", ps.solves ? ps.seconds / ps.solves : 0.0);
+    ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);
+    ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
+    j.set("ppe", ppe_json);
+  }
   j.set("timing", timing);
   Json metrics = Json::object();
   metrics.set("kinetic_energy", last_.kinetic_energy).set("max_speed", last_.max_speed).set("cv", last_.cv);

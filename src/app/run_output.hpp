@@ -13,6 +13,8 @@
 
 namespace arksph {
 
+struct OutputHistory;  // checkpoint restart (app/output_resume.hpp)
+
 class RunOutput {
  public:
   RunOutput(const Scene& scene, Model& model, const RunOptions& options);
@@ -22,6 +24,8 @@ class RunOutput {
   // Writes summary.json (also after a failure: status "failed" with the diagnosis).
   void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
               long wall_reflections, long neighbor_rebuilds);
+  // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
+  void resume(const OutputHistory& earlier);
 
  private:
   std::vector<std::string> csv_columns() const;

@@ -40,6 +40,11 @@ Model build_model(const Scene& scene) {
   model.terms.push_back("kernel:" + scene.kernel);
   model.terms.push_back("integrator:erkstep:" + scene.integrator);
   model.rhs = std::make_unique<RhsEvaluator>(scene, model.particles, std::move(kernel), std::move(terms));
+  if (scene.scheme == "isph") {
+    model.projection = std::make_unique<Projection>(scene, *model.rhs);
+    model.terms.push_back("projection:ppe-" + scene.ppe_solver);
+    if (scene.centre_positions) model.terms.push_back("projection:centred_positions");
+  }
   return model;
 }
 

@@ -7,6 +7,7 @@
 #include "core/particles.hpp"
 #include "core/scene.hpp"
 #include "integrate/erk_integrator.hpp"
+#include "projection/projection.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
@@ -16,6 +17,7 @@ struct Model {
   double h = 0;            // smoothing length
   double sound_speed = 0;  // wcsph only
   std::unique_ptr<RhsEvaluator> rhs;
+  std::unique_ptr<Projection> projection;  // isph only
   std::vector<std::string> terms;  // everything constructed: RHS terms, boundaries, integrator
 };
 

@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/checkpointing.hpp"  // checkpoints and restart
+#include "app/interrupt.hpp"
+#include "app/output_resume.hpp"
 #include "app/progress.hpp"
 #include "app/run_output.hpp"
 #include "app/setup.hpp"
@@ -53,7 +56,13 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const StateLayout& layout = rhs.layout();
   print_run_header(scene, model);
 
+  // Restart: check the checkpoint against the scene, and read the earlier output before RunOutput truncates it.
+  Checkpointer checkpoints(scene, model, options.restart, options.restart_path);
+  const OutputHistory earlier = checkpoints.restarting() ? read_output_history(scene.directory, checkpoints.start_time(),
+                                                                               checkpoints.restart().output_frame)
+                                                         : OutputHistory{};
   RunOutput out(scene, model, options);  // creates the directory, CSV; throws InputError if unwritable
+  if (checkpoints.restarting()) out.resume(earlier);
 
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
@@ -65,20 +74,31 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     return stable_step(scene, model, max_speed_of(layout, y), rhs.max_acceleration());
   };
   eo.initial_dt = stable_step(scene, model, max_speed_of(layout, y0.data()), rhs.max_acceleration());
+  if (model.projection) {
+    Projection* proj = model.projection.get();
+    eo.postprocess = [proj](double t, double* y) { proj->project(t, y); };
+  }
+  if (checkpoints.restarting()) {  // continue from the stored state; d0 stays that of t = 0
+    y0 = checkpoints.restart().state;
+    eo.initial_dt = checkpoints.restart().next_step;
+    rhs.invalidate_neighbors();
+  }
   const long diag_evals_before = rhs.evaluations();
-  ErkIntegrator integrator([&](double t, const double* y, double* ydot) { rhs.eval(t, y, ydot); }, y0, 0.0, eo);
+  ErkIntegrator integrator([&](double t, const double* y, double* ydot) { rhs.eval(t, y, ydot); }, y0,
+                           checkpoints.start_time(), eo);
+  integrator.set_counter_offset(checkpoints.counters());
   if (integrator.workaround_installed()) out.add_term("erkstep:fsal_bug_workaround");
 
   StateChecker checker(scene, model);
   const WallReflection reflection(scene, layout);
-  long reflections = 0;
+  long reflections = checkpoints.restarting() ? checkpoints.restart().wall_reflections : 0;
   Progress progress(scene.end, options.quiet);
   long diag_evals = rhs.evaluations() - diag_evals_before + 1;
 
   // Output at t = 0, every `every`, and the end time exactly.
-  out.write(0.0, y0.data(), d0, integrator.stats());
-  double t = 0.0;
-  int frame = 1;
+  if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
+  double t = checkpoints.start_time();
+  int frame = checkpoints.first_frame();
   RunResult result;
   try {
     while (t < scene.end) {
@@ -86,7 +106,8 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
       while (t < t_next) {
-        t = integrator.step(t_next);
+        if (model.projection) model.projection->begin_step(t, integrator.state());
+        t = integrator.step(checkpoints.limit(t_next));  // checkpoint times are stop times too
         const ErkStats st = integrator.stats();
         dt_max = std::max(dt_max, st.last_step);
         if (const long r = reflection.apply(integrator.state())) {  // sync point: re-initialise
@@ -98,6 +119,8 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
           throw NumericalFailure("time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " +
                                  std::to_string(t) + " before time.end");
         progress.step(t, st.steps, st.last_step);
+        if (const int sig = pending_interrupt()) throw Interrupted{sig};
+        if (t < t_next) checkpoints.at(t, integrator, rhs, frame, reflections);
       }
       const long before = rhs.evaluations();
       ErkStats st = integrator.stats();
@@ -106,10 +129,18 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
       diag_evals += rhs.evaluations() - before;
       progress.frame(t, st.steps, dt_max);
       ++frame;
+      checkpoints.at(t, integrator, rhs, frame, reflections);
     }
+    checkpoints.at_end(t, integrator, frame, reflections);
+    result.checkpoint = checkpoints.path();
   } catch (const NumericalFailure& e) {
     result.exit_code = 3;
     result.message = e.what();
+  } catch (const Interrupted& i) {  // checkpoint at the last completed step, then exit 128 + signal
+    result.exit_code = 128 + i.signal;
+    result.interrupted = true;
+    result.checkpoint = checkpoints.write(t, integrator, frame, reflections);
+    result.message = std::string("interrupted by ") + interrupt_name(i.signal) + " at t = " + std::to_string(t);
   }
   progress.finish();
   const ErkStats st = integrator.stats();

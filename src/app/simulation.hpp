@@ -6,14 +6,20 @@
 
 namespace arksph {
 
+struct Checkpoint;  // io/checkpoint.hpp
+
 struct RunOptions {
   bool quiet = false;        // no progress output
   bool write_frames = true;  // VTP frames and PVD
+  const Checkpoint* restart = nullptr;  // arksph run --restart: continue from this checkpoint
+  std::string restart_path;             // its file (for messages)
 };
 
 struct RunResult {
   int exit_code = 0;  // 0 ok, 3 numerical failure (INTERFACE.md)
   std::string message;
+  bool interrupted = false;  // SIGINT/SIGTERM: exit code 128 + signal, checkpoint written
+  std::string checkpoint;    // the last checkpoint written ("" if none)
 };
 
 // Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up.

@@ -5,13 +5,15 @@
 
 #include "integrate/erk_integrator.hpp"
 #include "kernels/kernel.hpp"
+#include "projection/poisson_solver.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
 
 std::vector<std::string> registered_names(const std::string& family) {
   if (family == "kernel") return kernel_names();
-  if (family == "scheme") return {"wcsph"};
+  if (family == "scheme") return {"wcsph", "isph"};
+  if (family == "ppe_solver") return poisson_solver_names();
   if (family == "viscosity_model") return viscosity_model_names();
   if (family == "density_mode") return {"continuity", "summation"};
   if (family == "pressure_gradient") return pressure_gradient_names();

@@ -61,6 +61,9 @@ struct Scene {
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";
+  std::string ppe_solver = "klu";      // isph: "klu" (direct) | "cg" (incomplete-Cholesky CG, warm start)
+  double ppe_tolerance = 1e-10;        // isph, cg: relative residual
+  bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)
 
   // [time]
   double end = 1.0;
@@ -73,6 +76,7 @@ struct Scene {
   // [output]
   std::string directory = "runs/unnamed";
   double every = 0.0;  // 0: only first and last frame
+  double checkpoint_every = 0.0;  // simulated time between checkpoint.h5 writes; 0: only at the end
 
   // [metrics]
   int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors

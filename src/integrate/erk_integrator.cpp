@@ -72,7 +72,7 @@ int erk_table_order(const std::string& name) {
 }
 
 ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt)
-    : f_(std::move(f)), stab_(opt.stability), n_(y0.size()), t_(t0) {
+    : f_(std::move(f)), stab_(opt.stability), post_(opt.postprocess), n_(y0.size()), t_(t0) {
   check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
   y_ = N_VNew_Serial(static_cast<sunindextype>(n_), ctx_);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
@@ -95,7 +95,15 @@ ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, doubl
   const int flag = ERKStepSetTable(mem_, B);
   ARKodeButcherTable_Free(B);
   check(flag, "ERKStepSetTable");
-  if (opt.apply_fsal_workaround && erk_table_has_fsal_bug(opt.table)) {
+  if (post_) {
+    check(ERKStepSetPostprocessStepFn(mem_,
+                                      [](sunrealtype t, N_Vector y, void* self) {
+                                        static_cast<ErkIntegrator*>(self)->post_(t, N_VGetArrayPointer(y));
+                                        return 0;
+                                      }),
+          "ERKStepSetPostprocessStepFn");
+    workaround_ = erk_table_has_fsal_bug(opt.table);
+  } else if (opt.apply_fsal_workaround && erk_table_has_fsal_bug(opt.table)) {
     check(ERKStepSetPostprocessStepFn(mem_, [](sunrealtype, N_Vector, void*) { return 0; }),
           "ERKStepSetPostprocessStepFn");
     workaround_ = true;
@@ -103,6 +111,7 @@ ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, doubl
   check(ERKStepSetMaxNumSteps(mem_, opt.max_steps), "ERKStepSetMaxNumSteps");
   if (opt.fixed_dt > 0) {
     check(ERKStepSetFixedStep(mem_, opt.fixed_dt), "ERKStepSetFixedStep");
+    fixed_dt_ = opt.fixed_dt;
   } else {
     check(ERKStepSStolerances(mem_, opt.rtol, opt.atol), "ERKStepSStolerances");
     if (stab_) {
@@ -161,6 +170,20 @@ void ErkIntegrator::reset(double t) {
   t_ = t;
 }
 
+void ErkIntegrator::restart_at(double t, double h) {
+  reset(t);  // ERKStepReset keeps the step size it had; set the one a new integrator would take
+  if (fixed_dt_ > 0)
+    check(ERKStepSetFixedStep(mem_, fixed_dt_), "ERKStepSetFixedStep");
+  else if (h > 0)
+    check(ERKStepSetInitStep(mem_, h), "ERKStepSetInitStep");
+}
+
+double ErkIntegrator::next_step() const {
+  double h = 0;
+  ERKStepGetCurrentStep(mem_, &h);
+  return h;
+}
+
 ErkStats ErkIntegrator::stats() const {
   ErkStats s;
   long nst = 0, nacc = 0, natt = 0, nfe = 0, netf = 0;
@@ -171,6 +194,11 @@ ErkStats ErkIntegrator::stats() const {
   s.attempts = natt;
   s.error_test_fails = netf;
   ERKStepGetLastStep(mem_, &s.last_step);
+  s.steps += offset_.steps;  // restart: the counters of the run before
+  s.rhs_evals += offset_.rhs_evals;
+  s.attempts += offset_.attempts;
+  s.error_test_fails += offset_.error_test_fails;
+  if (s.last_step == 0) s.last_step = offset_.last_step;
   return s;
 }
 

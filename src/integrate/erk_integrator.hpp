@@ -27,6 +27,9 @@ struct ErkOptions {
   StabilityFunction stability;  // adaptive mode: h <= stability(t, y)
   double initial_dt = 0;        // adaptive mode: first step (ERKStep does not apply the stability fn to it)
   bool apply_fsal_workaround = true;
+  // Applied to every accepted step, y modified in place (ISPH projection). Installing it also
+  // cures the FSAL bug, since ERKStep then recomputes f(y_{n+1}).
+  std::function<void(double t, double* y)> postprocess;
 };
 
 struct ErkStats {
@@ -59,18 +62,28 @@ class ErkIntegrator {
   std::size_t size() const { return n_; }
   ErkStats stats() const;
   bool workaround_installed() const { return workaround_; }
+  // Checkpoints (io/checkpoint.hpp): re-initialises at (t, state()) as a new integrator created
+  // there would start (first step h in adaptive mode; the fixed step otherwise), so that a run
+  // restarted from the checkpoint continues bit for bit.
+  void restart_at(double t, double h);
+  double next_step() const;  // the step size ERKStep will attempt next
+  // Counters of the run before a restart, added to stats().
+  void set_counter_offset(const ErkStats& offset) { offset_ = offset; }
 
  private:
   static int rhs_cb(double t, N_Vector y, N_Vector ydot, void* self);
   static int stab_cb(N_Vector y, double t, double* hstab, void* self);
   RhsFunction f_;
   StabilityFunction stab_;
+  std::function<void(double, double*)> post_;
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;
   void* mem_ = nullptr;
   std::size_t n_;
   double t_;
   bool workaround_ = false;
+  double fixed_dt_ = 0;
+  ErkStats offset_{};
   std::string last_message_;  // last ARKODE warning or error
 };
 

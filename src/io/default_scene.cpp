@@ -53,6 +53,9 @@ background_pressure = 0.0      # constant added to the Tait pressure (>= 0; Morr
 density_mode = "continuity"    # "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
 pressure_gradient = "colagrossi"   # "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
 density_correction = "none"    # "none" | "pozorski_wawrenczuk" (projection schemes only)
+ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG); CG warm-started
+ppe_tolerance = 1e-10          # isph with cg: relative residual
+centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
 
 [time]
 end = 5.0                      # final simulated time (> 0)
@@ -66,6 +69,7 @@ max_steps = 100000000          # abort after this many steps (>= 1)
 [output]
 directory = "runs/default"     # output folder (--out overrides; default runs/<scene.name>)
 every = 0.5                    # simulated time between VTP frames (0: first and last only)
+checkpoint_every = 0.0         # simulated time between checkpoint.h5 writes (>= 0; 0: only at the end)
 
 [metrics]
 ghia_re = 100                  # Ghia et al. 1982 centreline errors: 0 (off), 100 or 1000

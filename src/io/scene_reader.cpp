@@ -221,7 +221,8 @@ void read_fluid(const Section& root, Scene& s) {
 void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
-                                            "pressure_gradient", "density_correction"});
+                                            "pressure_gradient", "density_correction", "ppe_solver",
+                                            "ppe_tolerance", "centre_positions"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
   s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
@@ -241,6 +242,12 @@ void read_method(const Section& root, Scene& s) {
                                      "\" needs a projection scheme; scheme \"wcsph\" takes only \"none\"");
   if (s.sound_speed != 0 && s.scheme != "wcsph")
     m.reporter().warn(m.key("sound_speed"), "unused by scheme " + s.scheme);
+  // Projection schemes: the Poisson solver ("klu" | "cg"), the CG tolerance, and the centring of
+  // positions in time (Cummins & Rudman eq. 12).
+  s.ppe_solver = m.registered("ppe_solver", "ppe_solver", s.ppe_solver);
+  s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);
+  m.require(s.ppe_tolerance > 0 && s.ppe_tolerance < 1, "ppe_tolerance", "in (0, 1)", s.ppe_tolerance);
+  s.centre_positions = m.boolean("centre_positions", s.centre_positions);
 }
 
 void read_time_output(const Section& root, Scene& s) {
@@ -259,11 +266,13 @@ void read_time_output(const Section& root, Scene& s) {
   s.max_steps = t.integer("max_steps", s.max_steps);
   t.require(s.max_steps >= 1, "max_steps", ">= 1", static_cast<double>(s.max_steps));
 
-  const Section o = root.section("output", {"directory", "every"});
+  const Section o = root.section("output", {"directory", "every", "checkpoint_every"});
   s.directory = o.string("directory", "runs/" + s.name);
   if (s.directory.empty()) o.fail("directory", "must not be empty");
   s.every = o.number("every", s.every);  // simulated time between frames; 0: first and last only
   o.require(s.every >= 0, "every", ">= 0", s.every);
+  s.checkpoint_every = o.number("checkpoint_every", s.checkpoint_every);  // time between checkpoints; 0: end only
+  o.require(s.checkpoint_every >= 0, "checkpoint_every", ">= 0", s.checkpoint_every);
 
   const Section mt = root.section("metrics", {"ghia_re", "poiseuille"});
   s.ghia_re = static_cast<int>(mt.integer("ghia_re", s.ghia_re));

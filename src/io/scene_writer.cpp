@@ -84,7 +84,10 @@ std::string scene_to_toml(const Scene& s) {
     << "background_pressure = " << num(s.background_pressure) << "\n"
     << "density_mode = " << quote(s.density_mode) << "\n"
     << "pressure_gradient = " << quote(s.pressure_gradient) << "\n"
-    << "density_correction = " << quote(s.density_correction) << "\n\n";
+    << "density_correction = " << quote(s.density_correction) << "\n"
+    << "ppe_solver = " << quote(s.ppe_solver) << "\n"
+    << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
+    << "centre_positions = " << boolean(s.centre_positions) << "\n\n";
   o << "[time]\n"
     << "end = " << num(s.end) << "\n"
     << "integrator = " << quote(s.integrator) << "\n"
@@ -95,7 +98,8 @@ std::string scene_to_toml(const Scene& s) {
     << "max_steps = " << s.max_steps << "\n\n";
   o << "[output]\n"
     << "directory = " << quote(s.directory) << "\n"
-    << "every = " << num(s.every) << "\n\n";
+    << "every = " << num(s.every) << "\n"
+    << "checkpoint_every = " << num(s.checkpoint_every) << "\n\n";
   o << "[metrics]\n"
     << "ghia_re = " << s.ghia_re << "\n"
     << "poiseuille = " << boolean(s.poiseuille) << "\n";

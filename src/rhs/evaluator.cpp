@@ -107,6 +107,9 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   std::copy(f.u.begin(), f.u.begin() + n, f.ud.begin());
   if (two_d) std::copy(f.v.begin(), f.v.begin() + n, f.vd.begin());
   f.m.resize(f.n_all);
+  f.src.resize(f.n_all);
+  for (std::size_t a = 0; a < n; ++a) f.src[a] = static_cast<std::uint32_t>(a);
+  for (std::size_t g = 0; g < ng; ++g) f.src[n + g] = ghosts_.source[g];
   for (std::size_t g = 0; g < ng; ++g) {
     const std::size_t i = n + g, s = ghosts_.source[g];
     const auto& mv = ghosts_.map[g];

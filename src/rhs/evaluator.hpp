@@ -38,6 +38,9 @@ class RhsEvaluator {
   double max_acceleration() const { return max_accel_; }  // from the last eval, real particles
   long evaluations() const { return evals_; }
   long neighbor_rebuilds() const { return rebuilds_; }
+  // Forces a fresh ghost set and candidate list at the next eval, as after a restart from a
+  // checkpoint: called at every checkpoint so that a restarted run sums pairs in the same order.
+  void invalidate_neighbors() { ref_x_.clear(); }
   const RhsTiming& timing() const { return timing_; }
 
  private:

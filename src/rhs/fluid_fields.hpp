@@ -23,6 +23,7 @@ struct FluidFields {
   std::vector<double> ud, vd;  // velocity for the divergence (free-slip images near walls, Szewc §6)
   std::vector<double> rho, p, m;
   std::vector<double> nu;      // kinematic viscosity per point
+  std::vector<std::uint32_t> src;  // the real particle each point stands for (itself when real)
 
   // Real particles only.
   std::vector<double> rho0;               // reference density of the phase

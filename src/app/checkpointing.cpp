@@ -1,0 +1,133 @@
+#include "app/checkpointing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "core/errors.hpp"
+#include "io/scene_schema.hpp"
+
+namespace arksph {
+
+namespace {
+
+double tol(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
+
+// The smallest k >= 1 with k * every > t. `hint` (the counter the checkpointed run had) is kept when
+// it fits, so that a restart computes the same stop times k * every as the run it continues.
+long next_index(double t, double every, long hint) {
+  if (every <= 0) return std::max(hint, 1L);
+  const auto time_of = [every](long k) { return static_cast<double>(k) * every; };
+  if (hint >= 1 && time_of(hint) > t + tol(t) && time_of(hint - 1) <= t + tol(t)) return hint;
+  long k = std::max(1L, static_cast<long>(std::floor(t / every)));
+  while (time_of(k) <= t + tol(t)) ++k;
+  while (k > 1 && time_of(k - 1) > t + tol(t)) --k;
+  return k;
+}
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+}  // namespace
+
+Checkpointer::Checkpointer(const Scene& scene, const Model& model, const Checkpoint* restart, std::string restart_path)
+    : scene_(scene),
+      model_(model),
+      restart_(restart),
+      path_(scene.directory + "/checkpoint.h5"),
+      every_(scene.checkpoint_every) {
+  if (!restart_) return;
+  const std::string& src = restart_path;
+  const StateLayout& L = model.rhs->layout();
+  const auto describe = [](std::size_t n, int dim, bool rho) {
+    return std::to_string(n) + " particles in " + std::to_string(dim) + "D " + (rho ? "with" : "without") +
+           " a density block";
+  };
+  if (restart_->dimension != L.dim || restart_->n != L.n || restart_->has_density != L.has_density)
+    throw InputError(src + ": the checkpoint holds " + describe(restart_->n, restart_->dimension, restart_->has_density) +
+                     ", the scene with the --set overrides has " + describe(L.n, L.dim, L.has_density));
+  const ParticleSet& p = model.particles;
+  const std::pair<const char*, bool> constants[] = {{"mass", same_bits(p.mass, restart_->mass)},
+                                                    {"rho0", same_bits(p.rho0, restart_->rho0)},
+                                                    {"id", same_bits(p.id, restart_->id)},
+                                                    {"phase", same_bits(p.phase, restart_->phase)}};
+  for (const auto& [name, same] : constants)
+    if (!same)
+      throw InputError(src + ": particles/" + name +
+                       " differs from the scene's: a restart may only change keys that keep the particle set");
+  if (!(scene.end > restart_->time + tol(restart_->time)))
+    throw InputError(src + ": time.end = " + scene_schema::format_number(scene.end) +
+                     " is not after the checkpoint time " + scene_schema::format_number(restart_->time) +
+                     " (continue with --set time.end=...)");
+  next_ = next_index(restart_->time, every_, restart_->checkpoint_index);
+}
+
+int Checkpointer::first_frame() const {
+  if (!restart_) return 1;
+  return static_cast<int>(next_index(restart_->time, scene_.every, restart_->output_frame));
+}
+
+ErkStats Checkpointer::counters() const {
+  ErkStats s;
+  if (!restart_) return s;
+  s.steps = restart_->steps;
+  s.rhs_evals = restart_->rhs_evals;
+  s.attempts = restart_->step_attempts;
+  s.error_test_fails = restart_->error_test_fails;
+  s.last_step = restart_->last_step;
+  return s;
+}
+
+bool Checkpointer::due(double t) const { return every_ > 0 && t >= next_time() - tol(next_time()); }
+
+double Checkpointer::limit(double t_stop) const {
+  if (every_ > 0 && next_time() < t_stop - tol(t_stop)) return next_time();
+  return t_stop;
+}
+
+void Checkpointer::at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {
+  if (!due(t)) return;
+  while (due(t)) ++next_;
+  const double h = integrator.next_step();
+  write(t, integrator, frames, reflections);
+  integrator.restart_at(t, h);  // what a restart from this file does, see checkpointing.hpp
+  rhs.invalidate_neighbors();
+}
+
+void Checkpointer::at_end(double t, ErkIntegrator& integrator, long frames, long reflections) {
+  if (last_written_ == t) return;
+  write(t, integrator, frames, reflections);
+}
+
+std::string Checkpointer::write(double t, ErkIntegrator& integrator, long frames, long reflections) {
+  const StateLayout& L = model_.rhs->layout();
+  Checkpoint c;
+  c.dimension = L.dim;
+  c.has_density = L.has_density;
+  c.n = L.n;
+  c.time = t;
+  const ErkStats st = integrator.stats();
+  c.steps = st.steps;
+  c.rhs_evals = st.rhs_evals;
+  c.step_attempts = st.attempts;
+  c.error_test_fails = st.error_test_fails;
+  c.last_step = st.last_step;
+  c.next_step = integrator.next_step();
+  c.output_frame = frames;
+  c.checkpoint_index = next_;
+  c.wall_reflections = reflections;
+  c.scene_toml = scene_.resolved_toml;
+  c.state.assign(integrator.state(), integrator.state() + L.size());
+  const ParticleSet& p = model_.particles;
+  c.mass = p.mass;
+  c.rho0 = p.rho0;
+  c.id = p.id;
+  c.phase = p.phase;
+  write_checkpoint(path_, c);
+  last_written_ = t;
+  return path_;
+}
+
+}  // namespace arksph

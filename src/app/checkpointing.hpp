@@ -1,0 +1,64 @@
+// Checkpoints during a run: scheduled ones (output.checkpoint_every), the last one at the end time,
+// one on SIGINT/SIGTERM; and the state a restart starts from.
+//
+// Exact restart. A run restarted from a scheduled or final checkpoint continues bit for bit like
+// the run that never stopped (fixed step, same stop times), because at every checkpoint the
+// uninterrupted run drops the hidden state a restart cannot have:
+//   - the integrator is re-initialised at (t, y) with the step a new integrator would take
+//     (ErkIntegrator::restart_at), so no FSAL value, step history or time round-off survives;
+//   - the RHS evaluator's Verlet list and ghost set are rebuilt at the next evaluation
+//     (RhsEvaluator::invalidate_neighbors), so pairs are summed in the same order;
+//   - checkpoint times are stop times of the integrator, like output times.
+// A checkpoint written on a signal is at an arbitrary step: a restart from it is a valid
+// continuation, not bit-identical to the uninterrupted run.
+#pragma once
+#include <string>
+
+#include "app/setup.hpp"
+#include "io/checkpoint.hpp"
+
+namespace arksph {
+
+// Thrown by the run loop when SIGINT/SIGTERM arrived (app/interrupt.hpp).
+struct Interrupted {
+  int signal = 0;
+};
+
+class Checkpointer {
+ public:
+  // `restart` (may be null) is the checkpoint this run starts from, read from `restart_path`;
+  // throws InputError if it does not fit the scene's particle set or time.end.
+  Checkpointer(const Scene& scene, const Model& model, const Checkpoint* restart, std::string restart_path);
+
+  bool restarting() const { return restart_ != nullptr; }
+  const Checkpoint& restart() const { return *restart_; }
+  double start_time() const { return restart_ ? restart_->time : 0.0; }
+  // Index of the next output frame (frame * output.every) at the start of the run.
+  int first_frame() const;
+  std::string path() const { return path_; }
+  // The integrator counters of the checkpointed run (ErkIntegrator::set_counter_offset).
+  ErkStats counters() const;
+
+  // The stop time for the next step: t_stop, or the next scheduled checkpoint if that comes first.
+  double limit(double t_stop) const;
+  // Writes the scheduled checkpoint if t has reached it; then re-initialises the integrator and the
+  // neighbour list (see above). `frames` = output frames written so far.
+  void at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections);
+  // The final checkpoint (skipped if the scheduled one was just written at t).
+  void at_end(double t, ErkIntegrator& integrator, long frames, long reflections);
+  // Unconditional write at (t, state) (interrupt). Returns the path.
+  std::string write(double t, ErkIntegrator& integrator, long frames, long reflections);
+
+ private:
+  bool due(double t) const;
+  double next_time() const { return next_ * every_; }
+  const Scene& scene_;
+  const Model& model_;
+  const Checkpoint* restart_;
+  std::string path_;
+  double every_ = 0;
+  long next_ = 1;              // index k of the next scheduled checkpoint time k * every
+  double last_written_ = -1;   // time of the last checkpoint written by this run
+};
+
+}  // namespace arksph

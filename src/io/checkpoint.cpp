@@ -1,0 +1,340 @@
+// HDF5 checkpoint writer and reader (HDF5 1.10 C API; layout in io/checkpoint_layout.md).
+#include "io/checkpoint.hpp"
+
+#include <fcntl.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+#include "core/errors.hpp"
+
+namespace arksph {
+
+namespace {
+
+constexpr const char* kFormatName = "arksph checkpoint";
+
+// The innermost message of HDF5's error stack (read right after the failing call).
+std::string hdf5_reason() {
+  std::string reason;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned n, const H5E_error2_t* e, void* out) -> herr_t {
+        if (n == 0 && e && e->desc) *static_cast<std::string*>(out) = e->desc;
+        return 0;
+      },
+      &reason);
+  return reason.empty() ? "HDF5 error" : reason;
+}
+
+// Turns off HDF5's automatic error printing for the lifetime of the object (errors become
+// exceptions with one-line messages instead of stacks on stderr).
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+// An hid_t that closes itself. `what` names the failing call in messages.
+class Hid {
+ public:
+  Hid(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
+    if (id_ < 0) throw std::runtime_error(what + ": " + hdf5_reason());
+  }
+  ~Hid() {
+    if (id_ >= 0) close_(id_);
+  }
+  Hid(const Hid&) = delete;
+  Hid& operator=(const Hid&) = delete;
+  hid_t get() const { return id_; }
+  operator hid_t() const { return id_; }
+  // Closes now and reports a failure (a file's close is where buffered data reaches the disk).
+  void close(const std::string& what) {
+    const herr_t status = close_(id_);
+    id_ = -1;
+    if (status < 0) throw std::runtime_error(what + ": " + hdf5_reason());
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error(what + ": " + hdf5_reason());
+}
+
+// ---- writing ----
+
+void write_scalar(hid_t obj, const char* name, hid_t file_type, hid_t mem_type, const void* value) {
+  Hid space(H5Screate(H5S_SCALAR), H5Sclose, "H5Screate");
+  Hid attr(H5Acreate2(obj, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+           std::string("attribute ") + name);
+  check(H5Awrite(attr, mem_type, value), std::string("attribute ") + name);
+}
+
+void write_double(hid_t obj, const char* name, double v) {
+  write_scalar(obj, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &v);
+}
+
+void write_int64(hid_t obj, const char* name, long v) {
+  const std::int64_t w = v;
+  write_scalar(obj, name, H5T_STD_I64LE, H5T_NATIVE_INT64, &w);
+}
+
+void write_int32(hid_t obj, const char* name, int v) {
+  const std::int32_t w = v;
+  write_scalar(obj, name, H5T_STD_I32LE, H5T_NATIVE_INT32, &w);
+}
+
+// A variable-length UTF-8 string attribute (any length: the text lives in the global heap).
+void write_string(hid_t obj, const char* name, const std::string& s) {
+  Hid type(H5Tcopy(H5T_C_S1), H5Tclose, "H5Tcopy");
+  check(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
+  check(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
+  const char* text = s.c_str();
+  write_scalar(obj, name, type, type, &text);
+}
+
+// A 1D dataset of n values: chunked, shuffled, deflate level 4, Fletcher-32 checksum.
+void write_array(hid_t group, const char* name, hid_t file_type, hid_t mem_type, const void* data, std::size_t n) {
+  const hsize_t dims[1] = {static_cast<hsize_t>(n)}, maxdims[1] = {H5S_UNLIMITED};
+  const hsize_t chunk[1] = {std::clamp<hsize_t>(dims[0], 1, 65536)};
+  Hid space(H5Screate_simple(1, dims, maxdims), H5Sclose, "H5Screate_simple");
+  Hid dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "H5Pcreate");
+  check(H5Pset_chunk(dcpl, 1, chunk), "H5Pset_chunk");
+  check(H5Pset_shuffle(dcpl), "H5Pset_shuffle");
+  check(H5Pset_deflate(dcpl, 4), "H5Pset_deflate");
+  check(H5Pset_fletcher32(dcpl), "H5Pset_fletcher32");
+  Hid dset(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
+           std::string("dataset ") + name);
+  if (n > 0) check(H5Dwrite(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), std::string("dataset ") + name);
+}
+
+void write_doubles(hid_t group, const char* name, const double* data, std::size_t n) {
+  write_array(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, n);
+}
+
+// Names of the state blocks in StateLayout order.
+std::vector<std::pair<const char*, std::size_t>> state_blocks(const StateLayout& L) {
+  std::vector<std::pair<const char*, std::size_t>> b;
+  const char* pos[2] = {"x", "y"};
+  const char* vel[2] = {"u", "v"};
+  for (int k = 0; k < L.dim; ++k) b.emplace_back(pos[k], L.pos(k));
+  for (int k = 0; k < L.dim; ++k) b.emplace_back(vel[k], L.vel(k));
+  if (L.has_density) b.emplace_back("rho", L.rho());
+  return b;
+}
+
+void write_file(const std::string& path, const Checkpoint& c) {
+  const StateLayout L = c.layout();
+  if (c.state.size() != L.size() || c.mass.size() != c.n || c.rho0.size() != c.n || c.id.size() != c.n ||
+      c.phase.size() != c.n)
+    throw std::logic_error("write_checkpoint: array sizes do not match n = " + std::to_string(c.n));
+  Hid file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "H5Fcreate");
+  write_string(file, "format", kFormatName);
+  write_int32(file, "format_version", c.format_version);
+  write_int32(file, "dimension", c.dimension);
+  write_int32(file, "has_density", c.has_density ? 1 : 0);
+  write_int64(file, "particles", static_cast<long>(c.n));
+  write_double(file, "time", c.time);
+  write_int64(file, "steps", c.steps);
+  write_int64(file, "rhs_evals", c.rhs_evals);
+  write_int64(file, "step_attempts", c.step_attempts);
+  write_int64(file, "error_test_fails", c.error_test_fails);
+  write_double(file, "last_step", c.last_step);
+  write_double(file, "next_step", c.next_step);
+  write_int64(file, "output_frame", c.output_frame);
+  write_int64(file, "checkpoint_index", c.checkpoint_index);
+  write_int64(file, "wall_reflections", c.wall_reflections);
+  write_string(file, "scene_toml", c.scene_toml);
+  {
+    Hid state(H5Gcreate2(file, "state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group state");
+    for (const auto& [name, offset] : state_blocks(L)) write_doubles(state, name, c.state.data() + offset, c.n);
+  }
+  {
+    Hid particles(H5Gcreate2(file, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                  "group particles");
+    write_doubles(particles, "mass", c.mass.data(), c.n);
+    write_doubles(particles, "rho0", c.rho0.data(), c.n);
+    write_array(particles, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, c.id.data(), c.n);
+    write_array(particles, "phase", H5T_STD_I32LE, H5T_NATIVE_INT32, c.phase.data(), c.n);
+  }
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "H5Fflush");
+  file.close("H5Fclose");
+}
+
+// Pushes a file's (or directory's) data to the disk, so that the rename below is never seen
+// pointing at data that a power loss would lose.
+void sync_path(const std::string& path, bool directory) {
+  const int fd = ::open(path.c_str(), directory ? O_RDONLY | O_DIRECTORY : O_RDONLY);
+  if (fd < 0) {
+    if (directory) return;  // best effort for the directory entry
+    throw std::runtime_error(std::string("open for fsync: ") + std::strerror(errno));
+  }
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0 && !directory) throw std::runtime_error(std::string("fsync: ") + std::strerror(err));
+}
+
+// ---- reading ----
+
+bool has_attr(hid_t obj, const char* name) { return H5Aexists(obj, name) > 0; }
+
+template <class T>
+T read_scalar(hid_t obj, const char* name, hid_t mem_type) {
+  if (!has_attr(obj, name)) throw std::runtime_error(std::string("attribute '") + name + "' missing");
+  Hid attr(H5Aopen(obj, name, H5P_DEFAULT), H5Aclose, std::string("attribute ") + name);
+  Hid space(H5Aget_space(attr), H5Sclose, std::string("attribute ") + name);
+  if (H5Sget_simple_extent_npoints(space) != 1)
+    throw std::runtime_error(std::string("attribute '") + name + "' is not a scalar");
+  T v{};
+  check(H5Aread(attr, mem_type, &v), std::string("attribute ") + name);
+  return v;
+}
+
+double read_double(hid_t obj, const char* name) { return read_scalar<double>(obj, name, H5T_NATIVE_DOUBLE); }
+long read_int64(hid_t obj, const char* name) {
+  return static_cast<long>(read_scalar<std::int64_t>(obj, name, H5T_NATIVE_INT64));
+}
+
+// A string attribute, variable-length or fixed-length.
+std::string read_string(hid_t obj, const char* name) {
+  if (!has_attr(obj, name)) throw std::runtime_error(std::string("attribute '") + name + "' missing");
+  Hid attr(H5Aopen(obj, name, H5P_DEFAULT), H5Aclose, std::string("attribute ") + name);
+  Hid ftype(H5Aget_type(attr), H5Tclose, std::string("attribute ") + name);
+  if (H5Tget_class(ftype) != H5T_STRING) throw std::runtime_error(std::string("attribute '") + name + "' is not a string");
+  Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose, "H5Tcopy");
+  check(H5Tset_cset(mtype, H5Tget_cset(ftype)), "H5Tset_cset");  // HDF5 converts no ASCII <-> UTF-8
+  if (H5Tis_variable_str(ftype) > 0) {
+    check(H5Tset_size(mtype, H5T_VARIABLE), "H5Tset_size");
+    char* text = nullptr;
+    check(H5Aread(attr, mtype, &text), std::string("attribute ") + name);
+    std::string s = text ? text : "";
+    H5free_memory(text);
+    return s;
+  }
+  const std::size_t size = H5Tget_size(ftype);
+  check(H5Tset_size(mtype, size + 1), "H5Tset_size");
+  std::string buf(size + 1, '\0');
+  check(H5Aread(attr, mtype, buf.data()), std::string("attribute ") + name);
+  return std::string(buf.c_str());
+}
+
+// Reads the 1D dataset `name` of exactly n values into data (mem_type converts).
+void read_array(hid_t group, const std::string& where, const char* name, hid_t mem_type, void* data, std::size_t n) {
+  const std::string label = where + "/" + name;
+  if (H5Lexists(group, name, H5P_DEFAULT) <= 0) throw std::runtime_error("dataset " + label + " missing");
+  Hid dset(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose, "dataset " + label);
+  Hid space(H5Dget_space(dset), H5Sclose, "dataset " + label);
+  hsize_t dims[1] = {0};
+  if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("dataset " + label + " is not one-dimensional");
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  if (dims[0] != n)
+    throw std::runtime_error("dataset " + label + " has " + std::to_string(dims[0]) + " values, expected " +
+                             std::to_string(n));
+  if (n > 0) check(H5Dread(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "dataset " + label);
+}
+
+Checkpoint read_file(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error("not an HDF5 file (or truncated)");
+  Hid file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "H5Fopen");
+  if (!has_attr(file, "format") || read_string(file, "format") != kFormatName)
+    throw std::runtime_error("not an arksph checkpoint (attribute format != \"" + std::string(kFormatName) + "\")");
+  Checkpoint c;
+  c.format_version = static_cast<int>(read_int64(file, "format_version"));
+  if (c.format_version != kCheckpointFormatVersion)
+    throw std::runtime_error("format_version " + std::to_string(c.format_version) + ", this arksph reads version " +
+                             std::to_string(kCheckpointFormatVersion));
+  c.dimension = static_cast<int>(read_int64(file, "dimension"));
+  if (c.dimension != 1 && c.dimension != 2)
+    throw std::runtime_error("dimension " + std::to_string(c.dimension) + " is not 1 or 2");
+  c.has_density = read_int64(file, "has_density") != 0;
+  const long n = read_int64(file, "particles");
+  if (n <= 0) throw std::runtime_error("particles = " + std::to_string(n));
+  c.n = static_cast<std::size_t>(n);
+  c.time = read_double(file, "time");
+  c.steps = read_int64(file, "steps");
+  c.rhs_evals = read_int64(file, "rhs_evals");
+  c.step_attempts = read_int64(file, "step_attempts");
+  c.error_test_fails = read_int64(file, "error_test_fails");
+  c.last_step = read_double(file, "last_step");
+  c.next_step = read_double(file, "next_step");
+  c.output_frame = read_int64(file, "output_frame");
+  c.checkpoint_index = read_int64(file, "checkpoint_index");
+  c.wall_reflections = read_int64(file, "wall_reflections");
+  c.scene_toml = read_string(file, "scene_toml");
+
+  const StateLayout L = c.layout();
+  c.state.assign(L.size(), 0.0);
+  {
+    if (H5Lexists(file, "state", H5P_DEFAULT) <= 0) throw std::runtime_error("group /state missing");
+    Hid state(H5Gopen2(file, "state", H5P_DEFAULT), H5Gclose, "group /state");
+    for (const auto& [name, offset] : state_blocks(L))
+      read_array(state, "/state", name, H5T_NATIVE_DOUBLE, c.state.data() + offset, c.n);
+  }
+  {
+    if (H5Lexists(file, "particles", H5P_DEFAULT) <= 0) throw std::runtime_error("group /particles missing");
+    Hid particles(H5Gopen2(file, "particles", H5P_DEFAULT), H5Gclose, "group /particles");
+    c.mass.resize(c.n);
+    c.rho0.resize(c.n);
+    c.id.resize(c.n);
+    c.phase.resize(c.n);
+    read_array(particles, "/particles", "mass", H5T_NATIVE_DOUBLE, c.mass.data(), c.n);
+    read_array(particles, "/particles", "rho0", H5T_NATIVE_DOUBLE, c.rho0.data(), c.n);
+    read_array(particles, "/particles", "id", H5T_NATIVE_INT64, c.id.data(), c.n);
+    read_array(particles, "/particles", "phase", H5T_NATIVE_INT32, c.phase.data(), c.n);
+  }
+  file.close("H5Fclose");
+  return c;
+}
+
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Checkpoint& c) {
+  const std::string tmp = path + ".tmp";
+  try {
+    QuietHdf5 quiet;
+    write_file(tmp, c);
+    sync_path(tmp, false);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": " + e.what());
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": rename: " + std::strerror(err));
+  }
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  sync_path(dir.empty() ? "." : dir, true);
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  try {
+    QuietHdf5 quiet;
+    return read_file(path);
+  } catch (const std::exception& e) {
+    throw InputError(path + ": cannot read checkpoint: " + e.what());
+  }
+}
+
+}  // namespace arksph

@@ -1,0 +1,55 @@
+// HDF5 checkpoint: everything an exact restart needs (layout: io/checkpoint_layout.md).
+//   - the ODE state vector y, block by block as StateLayout lays it out (x, y, u, v, rho);
+//   - the constant per-particle data (mass, rho0, id, phase);
+//   - the resolved scene as TOML text, the time, the integrator counters and the output counters.
+// The file is written to `path.tmp`, flushed, closed, synced and renamed onto `path`, so a reader
+// sees either the previous checkpoint or the new one, never a partial file.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/particles.hpp"
+
+namespace arksph {
+
+constexpr int kCheckpointFormatVersion = 1;
+
+struct Checkpoint {
+  int format_version = kCheckpointFormatVersion;
+  int dimension = 2;
+  bool has_density = false;     // the state holds a density block (continuity equation)
+  std::size_t n = 0;            // particles
+  double time = 0;              // simulated time of the state
+  long steps = 0;               // accepted steps since t = 0 (over all restarts)
+  long rhs_evals = 0;           // RHS evaluations by the integrator since t = 0
+  long step_attempts = 0;
+  long error_test_fails = 0;
+  double last_step = 0;         // the last step size taken
+  double next_step = 0;         // the step size the integrator would try next
+  long output_frame = 0;        // output frames written so far (index of the next one)
+  long checkpoint_index = 0;    // scheduled checkpoints written so far (output.checkpoint_every)
+  long wall_reflections = 0;
+  std::string scene_toml;       // Scene::resolved_toml of the run that wrote it
+  std::vector<double> state;    // y in StateLayout order, size layout().size()
+  std::vector<double> mass, rho0;
+  std::vector<std::int64_t> id;
+  std::vector<std::int32_t> phase;
+
+  StateLayout layout() const {
+    StateLayout L;
+    L.n = n;
+    L.dim = dimension;
+    L.has_density = has_density;
+    return L;
+  }
+};
+
+// Writes atomically (path.tmp, then rename). Throws std::runtime_error("cannot write <path>: ...").
+void write_checkpoint(const std::string& path, const Checkpoint& c);
+
+// Reads a checkpoint; ignores any `path.tmp` beside it. Throws InputError("<path>: ...") if the file
+// is missing, not HDF5, truncated, of another format version or inconsistent.
+Checkpoint read_checkpoint(const std::string& path);
+
+}  // namespace arksph

@@ -1,0 +1,38 @@
+// Linear solvers for the pressure Poisson equation A p = b, registered by name:
+//   "klu": SuiteSparse KLU with AMD ordering, the exact reference; the symbolic analysis is reused
+//          while the sparsity pattern is unchanged (klu_refactor), redone otherwise.
+//   "cg", "cg_ic": Eigen conjugate gradients with a Jacobi or an incomplete-Cholesky preconditioner,
+//          warm-started from the previous pressure; for large N (TOOLCHAIN.md §4: KLU costs ~20 s per
+//          factorisation at N = 57,600, CG about 2 s).
+// The matrix handed over is symmetric positive definite (the negated, volume-scaled approximate
+// Laplacian with one pinned unknown, see ppe_assembly.hpp).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+namespace arksph {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+struct SolveReport {
+  double relative_residual = 0;  // |A p - b| / |b|
+  int iterations = 0;            // 1 for a direct solve
+  bool refactored_symbolic = false;
+};
+
+class PoissonSolver {
+ public:
+  virtual ~PoissonSolver() = default;
+  virtual std::string name() const = 0;
+  // Solves A p = b; p holds the initial guess on entry (used by iterative solvers).
+  virtual SolveReport solve(const SparseMatrix& A, const std::vector<double>& b, std::vector<double>& p) = 0;
+};
+
+std::vector<std::string> poisson_solver_names();
+// tolerance: relative residual target of iterative solvers.
+std::unique_ptr<PoissonSolver> make_poisson_solver(const std::string& name, double tolerance);
+
+}  // namespace arksph

@@ -1,0 +1,21 @@
+// Poisson solvers by name: one line each.
+#include <stdexcept>
+
+#include "projection/poisson_solver.hpp"
+
+namespace arksph {
+
+std::unique_ptr<PoissonSolver> make_poisson_solver_klu();
+std::unique_ptr<PoissonSolver> make_poisson_solver_cg(double tolerance);
+std::unique_ptr<PoissonSolver> make_poisson_solver_cg_ic(double tolerance);
+
+std::vector<std::string> poisson_solver_names() { return {"klu", "cg", "cg_ic"}; }
+
+std::unique_ptr<PoissonSolver> make_poisson_solver(const std::string& name, double tolerance) {
+  if (name == "klu") return make_poisson_solver_klu();
+  if (name == "cg") return make_poisson_solver_cg(tolerance);
+  if (name == "cg_ic") return make_poisson_solver_cg_ic(tolerance);
+  throw std::out_of_range("unknown Poisson solver '" + name + "'");
+}
+
+}  // namespace arksph

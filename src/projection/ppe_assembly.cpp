@@ -1,0 +1,78 @@
+#include "projection/ppe_assembly.hpp"
+
+#include <numeric>
+
+#include "kernels/kernel.hpp"
+
+namespace arksph {
+
+std::vector<double> divergence_cummins_rudman(const FluidFields& f) {
+  std::vector<double> div(f.n_real, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    double s = 0;
+    const double rho_a = f.rho[a];
+    const double ua = f.u[a] / (rho_a * rho_a), va = f.dim == 2 ? f.v[a] / (rho_a * rho_a) : 0.0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      if (b >= f.n_real) return;  // ghosts left out (C&R §2.5)
+      const double rb2 = f.rho[b] * f.rho[b];
+      const double ux = f.u[b] / rb2 + ua, uy = f.dim == 2 ? f.v[b] / rb2 + va : 0.0;
+      s += f.m[b] * F * (ux * rx + uy * ry);  // m_b (u_b/rho_b^2 + u_a/rho_a^2) . grad_a W_ab
+    });
+    div[a] = rho_a * s;  // C&R eq. 17
+  }
+  return div;
+}
+
+namespace {
+// Coefficient c_ab of (P_a - P_b) in L(P)_a, C&R eq. 19: r . grad W = F r^2.
+inline double laplacian_coeff(const FluidFields& f, std::size_t a, std::uint32_t b, double r2, double F,
+                              double eta2) {
+  return f.m[b] / f.rho[b] * 4.0 / (f.rho[a] + f.rho[b]) * F * r2 / (r2 + eta2);
+}
+}  // namespace
+
+std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<double>& p) {
+  const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+  std::vector<double> out(f.n_real, 0.0);
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    double s = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double r2, double, double F) {
+      s += laplacian_coeff(f, a, b, r2, F, eta2) * (p[a] - p[f.src[b]]);
+    });
+    out[a] = s;
+  }
+  return out;
+}
+
+PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt) {
+  const std::size_t n = f.n_real;
+  const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+  PoissonSystem sys;
+  // Source: zero mean, scaled like the rows.
+  const double mean = std::accumulate(divergence.begin(), divergence.end(), 0.0) / static_cast<double>(n);
+  sys.b.resize(n);
+  for (std::size_t a = 0; a < n; ++a) sys.b[a] = -(f.m[a] / f.rho[a]) * (divergence[a] - mean) / dt;
+  sys.b[0] = 0.0;
+  // Matrix: per row, accumulate the off-diagonal coefficients by source column.
+  std::vector<Eigen::Triplet<double, int>> trip;
+  trip.reserve(f.pairs.count.empty() ? n : n * (f.pairs.stride / 2 + 1));
+  for (std::size_t a = 0; a < n; ++a) {
+    const double va = f.m[a] / f.rho[a];
+    double diag = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double r2, double, double F) {
+      const std::uint32_t s = f.src[b];
+      if (s == a) return;  // a's own mirror image: P_a - P_a = 0
+      const double c = -va * laplacian_coeff(f, a, b, r2, F, eta2);  // > 0
+      diag += c;
+      if (a != 0 && s != 0) trip.emplace_back(static_cast<int>(a), static_cast<int>(s), -c);
+    });
+    trip.emplace_back(static_cast<int>(a), static_cast<int>(a), a == 0 ? 1.0 : diag);
+  }
+  sys.A.resize(static_cast<long>(n), static_cast<long>(n));
+  sys.A.setFromTriplets(trip.begin(), trip.end());  // duplicates (several images of one source) summed
+  sys.A.makeCompressed();
+  return sys;
+}
+
+}  // namespace arksph

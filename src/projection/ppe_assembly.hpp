@@ -1,0 +1,39 @@
+// The pressure Poisson equation of the approximate projection (Cummins & Rudman 1999 §2.3-2.5):
+//
+//   L(P)_a = sum_b (m_b/rho_b) 4/(rho_a + rho_b) (P_a - P_b) (r_ab . grad_a W_ab)/(r_ab^2 + eta^2)
+//          = div(u*)_a / dt                                        (C&R eqs. 10 and 19; Szewc eq. 33)
+//
+// with eta^2 = 0.01 h^2, over real neighbours and ghosts; a ghost's pressure is its source's
+// (homogeneous Neumann walls, C&R §2.5), so its coefficient lands in the source's column. The
+// divergence is C&R eq. 17 over real neighbours only (ghosts left out, C&R §2.5), so that its sum
+// over particles vanishes when m/rho is uniform (solvability, C&R eq. 23).
+//
+// Null space: with Neumann walls and periodic sides L annihilates constants. The source is shifted
+// to zero mean (exact solvability also for unequal volumes), the equation of particle 0 is replaced
+// by P_0 = 0 (row and column, keeping symmetry), and the solution is shifted to zero mean.
+// Each row is multiplied by -V_a = -m_a/rho_a: the matrix becomes symmetric positive definite.
+#pragma once
+#include <vector>
+
+#include "projection/poisson_solver.hpp"
+#include "rhs/fluid_fields.hpp"
+
+namespace arksph {
+
+// div(u)_a of C&R eq. 17 for every real particle, real neighbours only.
+std::vector<double> divergence_cummins_rudman(const FluidFields& f);
+
+struct PoissonSystem {
+  SparseMatrix A;         // -V L with particle 0 pinned
+  std::vector<double> b;  // -V div(u*)/dt, zero-mean source, b_0 = 0
+};
+
+// Assembles the system at the current fields. rho: density per point used in eq. 19 (each
+// particle's own density; two-phase flows use unequal values).
+PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt);
+
+// The approximate Laplacian of C&R eq. 19 applied to a pressure field (real particles, ghosts
+// mirror their source): for tests and residual checks.
+std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<double>& p);
+
+}  // namespace arksph

@@ -1,0 +1,50 @@
+// The approximate pressure projection of Cummins & Rudman 1999 (§2.2-2.5), applied to the state
+// after each accepted ARKODE step (post-process step function):
+//   1. fields at the new positions r* (ghosts, neighbours) with the unconstrained velocity u*;
+//   2. the PPE L(P) = div(u*)/dt (eqs. 10, 17, 19; see ppe_assembly.hpp), solved by a registered solver;
+//   3. velocity correction u = u* - dt sum_b m_b (P_b/rho_b^2 + P_a/rho_a^2) grad_a W_ab (eq. 11),
+//      ghosts carrying their source's pressure;
+//   4. optionally, positions centred in time: r = r_n + dt (u + u_n)/2 (eq. 12).
+// With ARKSPH_FORWARD_EULER_1_1 this is C&R's scheme (eqs. 8-12), except that ARKODE evaluates the
+// viscous term at r_n where eq. 9 reads chi^n(r*): a difference of O(dt^2) per step.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "projection/poisson_solver.hpp"
+#include "rhs/evaluator.hpp"
+
+namespace arksph {
+
+struct ProjectionStats {
+  long solves = 0;
+  double seconds = 0;           // assembly + solve + correction
+  double solve_seconds = 0;     // the linear solve alone
+  double last_residual = 0, max_residual = 0;
+  long iterations = 0, symbolic_analyses = 0;
+};
+
+class Projection {
+ public:
+  Projection(const Scene& scene, RhsEvaluator& rhs);
+  // Remembers the state at the start of the next step (for the centring of eq. 12).
+  void begin_step(double t, const double* y);
+  // Projects y (the end-of-step state at time t) in place.
+  void project(double t, double* y);
+  const std::vector<double>& pressure() const { return pressure_; }
+  const ProjectionStats& stats() const { return stats_; }
+  std::string solver_name() const { return solver_->name(); }
+
+ private:
+  RhsEvaluator& rhs_;
+  std::unique_ptr<PoissonSolver> solver_;
+  bool centre_positions_;
+  double t_prev_ = 0;
+  std::vector<double> y_prev_;
+  std::vector<double> pressure_;
+  ProjectionStats stats_;
+};
+
+}  // namespace arksph

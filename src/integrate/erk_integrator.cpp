@@ -72,7 +72,8 @@ int erk_table_order(const std::string& name) {
 }
 
 ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt)
-    : f_(std::move(f)), stab_(opt.stability), post_(opt.postprocess), n_(y0.size()), t_(t0) {
+    : f_(std::move(f)), stab_(opt.stability), post_(opt.postprocess), n_(y0.size()), t_(t0),
+      fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt) {
   check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
   y_ = N_VNew_Serial(static_cast<sunindextype>(n_), ctx_);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
@@ -146,6 +147,10 @@ int ErkIntegrator::stab_cb(N_Vector y, double t, double* hstab, void* self) {
 }
 
 double ErkIntegrator::evolve_to(double tout) {
+  if (fixed_dt_ > 0) {  // see step(): land on tout by shortening the last step, no stop time
+    while (t_ < tout) step(tout);
+    return t_;
+  }
   check(ERKStepSetStopTime(mem_, tout), "ERKStepSetStopTime");
   const int flag = ERKStepEvolve(mem_, tout, y_, &t_, ARK_NORMAL);
   if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
@@ -155,6 +160,23 @@ double ErkIntegrator::evolve_to(double tout) {
 }
 
 double ErkIntegrator::step(double tstop) {
+  if (fixed_dt_ > 0) {
+    // Fixed step: the last step before tstop is shortened to land on it. ERKStep's own stop time
+    // is not used here: it returns the interpolant at tstop, and for first-order tables (degree-0
+    // interpolant) that is not the solution (measured: y' = 1 gave y(0.01) = 0.005).
+    const double remaining = tstop - t_;
+    const double h = remaining <= fixed_dt_ * (1 + 1e-10) ? remaining : fixed_dt_;
+    if (h != current_h_) {
+      check(ERKStepSetFixedStep(mem_, h), "ERKStepSetFixedStep");
+      current_h_ = h;
+    }
+    const int flag = ERKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP);
+    if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) + " with flag " +
+                                         std::to_string(flag) + " (" + ERKStepGetReturnFlagName(flag) + "; " +
+                                         last_message_ + ")");
+    if (std::abs(tstop - t_) <= 1e-12 * std::max(1.0, std::abs(tstop))) t_ = tstop;  // round-off of t + h
+    return t_;
+  }
   check(ERKStepSetStopTime(mem_, tstop), "ERKStepSetStopTime");
   const int flag = ERKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP);
   if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +

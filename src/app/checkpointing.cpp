@@ -80,11 +80,16 @@ ErkStats Checkpointer::counters() const {
   return s;
 }
 
-bool Checkpointer::due(double t) const { return every_ > 0 && t >= next_time() - tol(next_time()); }
+// Due once the integrator has reached its stop time (an adaptive step can end a round-off short of
+// it; the loop then takes one more step), and that stop is the checkpoint time up to round-off
+// (k * checkpoint_every and an output time j * every may differ in the last bit).
+bool Checkpointer::due(double t) const {
+  return every_ > 0 && t >= stop_ && t >= next_time() - tol(next_time());
+}
 
-double Checkpointer::limit(double t_stop) const {
-  if (every_ > 0 && next_time() < t_stop - tol(t_stop)) return next_time();
-  return t_stop;
+double Checkpointer::limit(double t_stop) {
+  stop_ = every_ > 0 && next_time() < t_stop - tol(t_stop) ? next_time() : t_stop;
+  return stop_;
 }
 
 void Checkpointer::at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {

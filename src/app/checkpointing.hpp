@@ -40,7 +40,7 @@ class Checkpointer {
   ErkStats counters() const;
 
   // The stop time for the next step: t_stop, or the next scheduled checkpoint if that comes first.
-  double limit(double t_stop) const;
+  double limit(double t_stop);
   // Writes the scheduled checkpoint if t has reached it; then re-initialises the integrator and the
   // neighbour list (see above). `frames` = output frames written so far.
   void at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections);
@@ -59,6 +59,7 @@ class Checkpointer {
   double every_ = 0;
   long next_ = 1;              // index k of the next scheduled checkpoint time k * every
   double last_written_ = -1;   // time of the last checkpoint written by this run
+  double stop_ = -1;           // the last stop time handed to the integrator (limit)
 };
 
 }  // namespace arksph

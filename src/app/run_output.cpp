@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "diagnostics/ghia.hpp"
+#include "diagnostics/nearest_neighbor.hpp"
 #include "diagnostics/poiseuille.hpp"
 #include "io/expression.hpp"
 #include "io/vtp_writer.hpp"
@@ -85,6 +86,13 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     write_csv(scene_.directory + "/poiseuille_profile.csv", {"y", "u_sph", "u_exact"}, prof);
     case_metrics_.set("poiseuille_eps_max_tstar_0.5_2", eps_max_window_);
   }
+  {  // nearest-neighbour distances at the latest output time (Szewc Figs. 7, 18)
+    const Histogram hist = nearest_neighbor_histogram(f, scene_.spacing);
+    std::vector<std::vector<double>> rows;
+    for (std::size_t k = 0; k < hist.counts.size(); ++k)
+      rows.push_back({k * hist.bin_width, (k + 1) * hist.bin_width, static_cast<double>(hist.counts[k])});
+    write_csv(scene_.directory + "/nn_histogram.csv", {"r_over_dx_lo", "r_over_dx_hi", "count"}, rows);
+  }
   diagnostic_seconds_ += since(t0);
 
   t0 = clock_type::now();
@@ -144,6 +152,12 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
     ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
     j.set("ppe", ppe_json);
+    if (const DensityCorrection* c = model_.projection->correction()) {
+      Json cj = Json::object();
+      cj.set("applications", c->stats().applications).set("iterations", c->stats().iterations);
+      cj.set("seconds", c->stats().seconds).set("first_history", Json(c->stats().first_history));
+      j.set("density_correction", cj);
+    }
   }
   j.set("timing", timing);
   Json metrics = Json::object();

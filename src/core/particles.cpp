@@ -18,9 +18,11 @@ ParticleSet make_lattice(const Scene& scene) {
 
   std::vector<Expression> where;
   for (const auto& ph : scene.phases) where.emplace_back(ph.where, std::vector<std::string>{"x", "y"});
-  std::vector<Expression> vel;
-  for (int k = 0; k < ps.dim; ++k)
+  std::vector<Expression> vel, offset;
+  for (int k = 0; k < ps.dim; ++k) {
     vel.emplace_back(scene.initial_velocity.at(k), std::vector<std::string>{"x", "y"});
+    offset.emplace_back(scene.initial_offset.at(k), std::vector<std::string>{"x", "y"});
+  }
 
   const double cell_volume = std::pow(scene.spacing, ps.dim);
   for (int k = 0; k < ps.dim; ++k) {
@@ -40,8 +42,8 @@ ParticleSet make_lattice(const Scene& scene) {
           rho = scene.phases[p].density;
         }
       }
-      ps.init_pos[0].push_back(x);
-      if (ps.dim == 2) ps.init_pos[1].push_back(y);
+      ps.init_pos[0].push_back(x + offset[0].eval(x, y, 0.0));
+      if (ps.dim == 2) ps.init_pos[1].push_back(y + offset[1].eval(x, y, 0.0));
       for (int k = 0; k < ps.dim; ++k) ps.init_vel[k].push_back(vel[k].eval(x, y, 0.0));
       ps.mass.push_back(rho * cell_volume);
       ps.rho0.push_back(rho);

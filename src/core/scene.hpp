@@ -46,6 +46,7 @@ struct Scene {
 
   // [initial]
   std::vector<std::string> initial_velocity{"0", "0"};
+  std::vector<std::string> initial_offset{"0", "0"};  // displacement added to the lattice positions
 
   // [[phase]]
   std::vector<PhaseSpec> phases;
@@ -64,6 +65,8 @@ struct Scene {
   std::string ppe_solver = "klu";      // isph: "klu" (direct) | "cg" (incomplete-Cholesky CG, warm start)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)
+  double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
+  int correction_max_iterations = 1;   // pozorski_wawrenczuk: Poisson solves per step at most
 
   // [time]
   double end = 1.0;

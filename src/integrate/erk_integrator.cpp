@@ -112,7 +112,6 @@ ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, doubl
   check(ERKStepSetMaxNumSteps(mem_, opt.max_steps), "ERKStepSetMaxNumSteps");
   if (opt.fixed_dt > 0) {
     check(ERKStepSetFixedStep(mem_, opt.fixed_dt), "ERKStepSetFixedStep");
-    fixed_dt_ = opt.fixed_dt;
   } else {
     check(ERKStepSStolerances(mem_, opt.rtol, opt.atol), "ERKStepSStolerances");
     if (stab_) {
@@ -193,11 +192,18 @@ void ErkIntegrator::reset(double t) {
 }
 
 void ErkIntegrator::restart_at(double t, double h) {
-  reset(t);  // ERKStepReset keeps the step size it had; set the one a new integrator would take
-  if (fixed_dt_ > 0)
+  // ERKStepReInit, unlike ERKStepReset, also clears the step-size controller's history and the
+  // counters, as in a new integrator; the counters live on in offset_.
+  const ErkStats total = stats();
+  check(ERKStepReInit(mem_, &ErkIntegrator::rhs_cb, t, y_), "ERKStepReInit");
+  t_ = t;
+  offset_ = total;
+  if (fixed_dt_ > 0) {
     check(ERKStepSetFixedStep(mem_, fixed_dt_), "ERKStepSetFixedStep");
-  else if (h > 0)
+    current_h_ = fixed_dt_;
+  } else if (h > 0) {
     check(ERKStepSetInitStep(mem_, h), "ERKStepSetInitStep");
+  }
 }
 
 double ErkIntegrator::next_step() const {

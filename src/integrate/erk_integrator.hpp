@@ -81,9 +81,9 @@ class ErkIntegrator {
   void* mem_ = nullptr;
   std::size_t n_;
   double t_;
+  double fixed_dt_ = 0;
   double current_h_ = 0;  // fixed-step mode: the step currently set in ERKStep (the last one may be shorter)
   bool workaround_ = false;
-  double fixed_dt_ = 0;
   ErkStats offset_{};
   std::string last_message_;  // last ARKODE warning or error
 };

@@ -36,6 +36,7 @@ body_force = ["0", "0"]        # acceleration g(x, y, t), one expression per dim
 
 [initial]
 velocity = ["0", "0"]          # initial velocity u(x, y), one expression per dimension
+offset = ["0", "0"]            # displacement of each lattice point (x, y) at t = 0, e.g. to perturb one particle
 
 # Further phases, by region (same number density, other mass); expressions in x, y and pi:
 # [[phase]]
@@ -56,6 +57,8 @@ density_correction = "none"    # "none" | "pozorski_wawrenczuk" (projection sche
 ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
+correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
+correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)
 
 [time]
 end = 5.0                      # final simulated time (> 0)

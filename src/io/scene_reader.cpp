@@ -197,8 +197,9 @@ void read_fluid(const Section& root, Scene& s) {
   f.require(s.viscosity >= 0, "viscosity", ">= 0", s.viscosity);
   s.body_force = f.expressions("body_force", dim, {"x", "y", "t"}, zeros);  // acceleration g(x, y, t)
 
-  const Section init = root.section("initial", {"velocity"});
+  const Section init = root.section("initial", {"velocity", "offset"});
   s.initial_velocity = init.expressions("velocity", dim, {"x", "y"}, zeros);  // u(x, y, 0)
+  s.initial_offset = init.expressions("offset", dim, {"x", "y"}, zeros);  // displacement of the lattice point (x, y)
 
   s.phases.clear();
   if (const toml::node* node = root.node("phase")) {
@@ -222,7 +223,8 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_tolerance", "centre_positions"});
+                                            "ppe_tolerance", "centre_positions", "correction_threshold",
+                                            "correction_max_iterations"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
   s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
@@ -248,6 +250,13 @@ void read_method(const Section& root, Scene& s) {
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);
   m.require(s.ppe_tolerance > 0 && s.ppe_tolerance < 1, "ppe_tolerance", "in (0, 1)", s.ppe_tolerance);
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);
+  // Pozorski-Wawrenczuk correction (Szewc §9): trigger threshold and iterations per step.
+  s.correction_threshold = m.number("correction_threshold", s.correction_threshold);
+  m.require(s.correction_threshold >= 0, "correction_threshold", ">= 0", s.correction_threshold);
+  const double iters = m.number("correction_max_iterations", s.correction_max_iterations);
+  m.require(iters >= 1 && iters <= 1000 && iters == std::floor(iters), "correction_max_iterations",
+            "a whole number in [1, 1000]", iters);
+  s.correction_max_iterations = static_cast<int>(iters);
 }
 
 void read_time_output(const Section& root, Scene& s) {

@@ -69,7 +69,8 @@ std::string scene_to_toml(const Scene& s) {
     << "viscosity = " << num(s.viscosity) << "\n"
     << "body_force = " << strings(s.body_force) << "\n\n";
   o << "[initial]\n"
-    << "velocity = " << strings(s.initial_velocity) << "\n\n";
+    << "velocity = " << strings(s.initial_velocity) << "\n"
+    << "offset = " << strings(s.initial_offset) << "\n\n";
   for (const PhaseSpec& p : s.phases)
     o << "[[phase]]\n"
       << "where = " << quote(p.where) << "\n"
@@ -87,7 +88,9 @@ std::string scene_to_toml(const Scene& s) {
     << "density_correction = " << quote(s.density_correction) << "\n"
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
-    << "centre_positions = " << boolean(s.centre_positions) << "\n\n";
+    << "centre_positions = " << boolean(s.centre_positions) << "\n"
+    << "correction_threshold = " << num(s.correction_threshold) << "\n"
+    << "correction_max_iterations = " << s.correction_max_iterations << "\n\n";
   o << "[time]\n"
     << "end = " << num(s.end) << "\n"
     << "integrator = " << quote(s.integrator) << "\n"

@@ -18,7 +18,9 @@ double since(std::chrono::steady_clock::time_point t0) {
 Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
-      centre_positions_(scene.centre_positions) {}
+      centre_positions_(scene.centre_positions) {
+  if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+}
 
 void Projection::begin_step(double t, const double* y) {
   t_prev_ = t;
@@ -76,6 +78,9 @@ void Projection::project(double t, double* y) {
     }
   }
   stats_.seconds += since(t0);
+
+  // 5. Density correction, Szewc eqs. 57-58 (timed separately).
+  if (correction_) correction_->apply(t, y);
 }
 
 }  // namespace arksph

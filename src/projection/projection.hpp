@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/poisson_solver.hpp"
 #include "rhs/evaluator.hpp"
 
@@ -36,6 +37,7 @@ class Projection {
   const std::vector<double>& pressure() const { return pressure_; }
   const ProjectionStats& stats() const { return stats_; }
   std::string solver_name() const { return solver_->name(); }
+  const DensityCorrection* correction() const { return correction_.get(); }
 
  private:
   RhsEvaluator& rhs_;
@@ -44,6 +46,7 @@ class Projection {
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   std::vector<double> pressure_;
+  std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   ProjectionStats stats_;
 };
 

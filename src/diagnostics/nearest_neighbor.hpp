@@ -1,0 +1,17 @@
+// Histogram of the distance from each particle to its nearest real neighbour, in units of the
+// initial spacing (Szewc et al. 2012 Figs. 7 and 18: clustering shows as a peak at small distances).
+#pragma once
+#include <vector>
+
+#include "rhs/fluid_fields.hpp"
+
+namespace arksph {
+
+struct Histogram {
+  double bin_width = 0;
+  std::vector<long> counts;  // bin k covers [k w, (k + 1) w); the last bin also takes larger values
+};
+
+Histogram nearest_neighbor_histogram(const FluidFields& f, double dx, double bin_width = 0.025, double max_ratio = 1.5);
+
+}  // namespace arksph

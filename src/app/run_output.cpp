@@ -86,6 +86,13 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     write_csv(scene_.directory + "/poiseuille_profile.csv", {"y", "u_sph", "u_exact"}, prof);
     case_metrics_.set("poiseuille_eps_max_tstar_0.5_2", eps_max_window_);
   }
+  if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
+    const double* p = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
+                                                                                 : f.p.data();
+    std::vector<std::vector<double>> rows;
+    for (std::size_t a = 0; a < f.n_real; ++a) rows.push_back({f.x[a], f.u[a], p[a], f.rho[a]});
+    write_csv(scene_.directory + "/profile_1d.csv", {"x", "u", "pressure", "density"}, rows);
+  }
   {  // nearest-neighbour distances at the latest output time (Szewc Figs. 7, 18)
     const Histogram hist = nearest_neighbor_histogram(f, scene_.spacing);
     std::vector<std::vector<double>> rows;

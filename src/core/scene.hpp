@@ -62,6 +62,7 @@ struct Scene {
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";
+  std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_solver = "klu";      // isph: "klu" (direct) | "cg" (incomplete-Cholesky CG, warm start)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)

@@ -54,6 +54,7 @@ background_pressure = 0.0      # constant added to the Tait pressure (>= 0; Morr
 density_mode = "continuity"    # "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
 pressure_gradient = "colagrossi"   # "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
 density_correction = "none"    # "none" | "pozorski_wawrenczuk" (projection schemes only)
+ppe_operator = "approximate"   # isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18: odd-even decoupling; klu only)
 ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12

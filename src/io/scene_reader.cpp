@@ -223,7 +223,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_tolerance", "centre_positions", "correction_threshold",
+                                            "ppe_operator", "ppe_tolerance", "centre_positions", "correction_threshold",
                                             "correction_max_iterations"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
@@ -247,6 +247,10 @@ void read_method(const Section& root, Scene& s) {
   // Projection schemes: the Poisson solver ("klu" | "cg"), the CG tolerance, and the centring of
   // positions in time (Cummins & Rudman eq. 12).
   s.ppe_solver = m.registered("ppe_solver", "ppe_solver", s.ppe_solver);
+  // "approximate" (C&R eq. 19) | "exact" (C&R eq. 18, the 1D decoupling demonstration; KLU only)
+  s.ppe_operator = m.one_of("ppe_operator", {"approximate", "exact"}, s.ppe_operator);
+  if (s.ppe_operator == "exact" && s.ppe_solver != "klu")
+    m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);
   m.require(s.ppe_tolerance > 0 && s.ppe_tolerance < 1, "ppe_tolerance", "in (0, 1)", s.ppe_tolerance);
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);

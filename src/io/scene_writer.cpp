@@ -86,6 +86,7 @@ std::string scene_to_toml(const Scene& s) {
     << "density_mode = " << quote(s.density_mode) << "\n"
     << "pressure_gradient = " << quote(s.pressure_gradient) << "\n"
     << "density_correction = " << quote(s.density_correction) << "\n"
+    << "ppe_operator = " << quote(s.ppe_operator) << "\n"
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"

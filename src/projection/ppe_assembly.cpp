@@ -76,3 +76,51 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
 }
 
 }  // namespace arksph
+
+namespace arksph {
+
+PoissonSystem assemble_ppe_exact(const FluidFields& f, const std::vector<double>& divergence, double dt) {
+  const std::size_t n = f.n_real;
+  const int dims = f.dim;
+  using Trip = Eigen::Triplet<double, int>;
+  std::vector<Trip> g[2], d[2];
+  for (std::size_t a = 0; a < n; ++a) {
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const double vb = f.m[b] / f.rho[b];
+      const double r[2] = {rx, ry};
+      for (int k = 0; k < dims; ++k) {
+        // G: row a, column src(b): V_b grad_a W_ab (pressure of ghost b is its source's)
+        g[k].emplace_back(static_cast<int>(a), static_cast<int>(f.src[b]), vb * F * r[k]);
+        // D: row a, column b for real b only: V_b grad_a W_ab
+        if (b < n) d[k].emplace_back(static_cast<int>(a), static_cast<int>(b), vb * F * r[k]);
+      }
+    });
+  }
+  SparseMatrix lap(static_cast<long>(n), static_cast<long>(n));
+  for (int k = 0; k < dims; ++k) {
+    SparseMatrix G(static_cast<long>(n), static_cast<long>(n)), D(static_cast<long>(n), static_cast<long>(n));
+    G.setFromTriplets(g[k].begin(), g[k].end());
+    D.setFromTriplets(d[k].begin(), d[k].end());
+    lap += SparseMatrix(D * G);
+  }
+  // Rows scaled by -V_a like assemble_ppe; particle 0 pinned.
+  PoissonSystem sys;
+  const double mean = std::accumulate(divergence.begin(), divergence.end(), 0.0) / static_cast<double>(n);
+  sys.b.resize(n);
+  std::vector<Trip> trip;
+  for (int col = 0; col < lap.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(lap, col); it; ++it) {
+      const auto row = static_cast<std::size_t>(it.row());
+      if (row == 0 || it.col() == 0) continue;
+      trip.emplace_back(it.row(), it.col(), -(f.m[row] / f.rho[row]) * it.value());
+    }
+  trip.emplace_back(0, 0, 1.0);
+  for (std::size_t a = 0; a < n; ++a) sys.b[a] = -(f.m[a] / f.rho[a]) * (divergence[a] - mean) / dt;
+  sys.b[0] = 0.0;
+  sys.A.resize(static_cast<long>(n), static_cast<long>(n));
+  sys.A.setFromTriplets(trip.begin(), trip.end());
+  sys.A.makeCompressed();
+  return sys;
+}
+
+}  // namespace arksph

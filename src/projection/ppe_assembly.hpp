@@ -37,3 +37,14 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
 std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<double>& p);
 
 }  // namespace arksph
+
+namespace arksph {
+
+// The exact projection operator of C&R eq. 18, (DG)P_i = sum_j V_j (sum_l V_l P_l grad_j W_jl) .
+// grad_i W_ij, built as the product of the SPH divergence (real neighbours, C&R §2.5) and the SPH
+// gradient (ghosts carrying their source's pressure). Its stencil reaches two kernel radii and it
+// decouples odd and even particles (C&R Fig. 1a); kept for that comparison. Same scaling, source
+// and pinning as assemble_ppe, but not symmetric: solve it with KLU.
+PoissonSystem assemble_ppe_exact(const FluidFields& f, const std::vector<double>& divergence, double dt);
+
+}  // namespace arksph

@@ -18,7 +18,8 @@ double since(std::chrono::steady_clock::time_point t0) {
 Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
-      centre_positions_(scene.centre_positions) {
+      centre_positions_(scene.centre_positions),
+      exact_operator_(scene.ppe_operator == "exact") {
   if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
 }
 
@@ -38,7 +39,7 @@ void Projection::project(double t, double* y) {
 
   // 2. Pressure Poisson equation.
   const std::vector<double> div = divergence_cummins_rudman(f);
-  const PoissonSystem sys = assemble_ppe(f, div, dt);
+  const PoissonSystem sys = exact_operator_? assemble_ppe_exact(f, div, dt) : assemble_ppe(f, div, dt);
   if (pressure_.size() != n) pressure_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
   const SolveReport rep = solver_->solve(sys.A, sys.b, pressure_);

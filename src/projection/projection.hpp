@@ -43,6 +43,7 @@ class Projection {
   RhsEvaluator& rhs_;
   std::unique_ptr<PoissonSolver> solver_;
   bool centre_positions_;
+  bool exact_operator_;
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   std::vector<double> pressure_;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "core/errors.hpp"
@@ -17,7 +19,7 @@ double tol(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 // it fits, so that a restart computes the same stop times k * every as the run it continues.
 long next_index(double t, double every, long hint) {
   if (every <= 0) return std::max(hint, 1L);
-  const auto time_of = [every](long k) { return static_cast<double>(k) * every; };
+  const auto time_of = [every](long k) { return scheduled_time(k, every); };
   if (hint >= 1 && time_of(hint) > t + tol(t) && time_of(hint - 1) <= t + tol(t)) return hint;
   long k = std::max(1L, static_cast<long>(std::floor(t / every)));
   while (time_of(k) <= t + tol(t)) ++k;
@@ -31,6 +33,12 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 }  // namespace
+
+double scheduled_time(long k, double every) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.15g", static_cast<double>(k) * every);
+  return std::strtod(text, nullptr);
+}
 
 Checkpointer::Checkpointer(const Scene& scene, const Model& model, const Checkpoint* restart, std::string restart_path)
     : scene_(scene),

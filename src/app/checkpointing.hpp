@@ -19,6 +19,11 @@
 
 namespace arksph {
 
+// k * every rounded to 15 significant digits, so that a scheduled time (output, checkpoint) equals
+// the same time typed in a scene: 3 * 0.1 gives 0.3, not 0.30000000000000004. Then a run to
+// time.end = 0.3 and a longer run with a checkpoint at 0.3 stop the integrator at the same time.
+double scheduled_time(long k, double every);
+
 // Thrown by the run loop when SIGINT/SIGTERM arrived (app/interrupt.hpp).
 struct Interrupted {
   int signal = 0;
@@ -51,7 +56,7 @@ class Checkpointer {
 
  private:
   bool due(double t) const;
-  double next_time() const { return next_ * every_; }
+  double next_time() const { return scheduled_time(next_, every_); }
   const Scene& scene_;
   const Model& model_;
   const Checkpoint* restart_;

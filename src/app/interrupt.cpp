@@ -3,6 +3,7 @@
 #include "app/interrupt.hpp"
 
 #include <csignal>
+#include <initializer_list>
 
 namespace arksph {
 
@@ -24,8 +25,12 @@ void install_interrupt_handlers() {
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART;  // interrupted system calls (file writes) resume
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  for (int sig : {SIGINT, SIGTERM}) {
+    struct sigaction old {};
+    sigaction(sig, nullptr, &old);
+    if (old.sa_handler == SIG_IGN) continue;  // e.g. SIGINT of a background job: stays ignored
+    sigaction(sig, &sa, nullptr);
+  }
 }
 
 int pending_interrupt() { return g_signal; }

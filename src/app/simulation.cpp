@@ -102,7 +102,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   RunResult result;
   try {
     while (t < scene.end) {
-      double t_next = scene.every > 0 ? frame * scene.every : scene.end;
+      double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;  // 3 * 0.1 -> 0.3
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
       while (t < t_next) {

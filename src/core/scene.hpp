@@ -63,6 +63,8 @@ struct Scene {
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";
   std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
+  std::string ppe_divergence = "cummins_rudman";  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
+  std::string ppe_pressure_level = "zero_mean";  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)
   std::string ppe_solver = "klu";      // isph: "klu" (direct) | "cg" (incomplete-Cholesky CG, warm start)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)

@@ -223,7 +223,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_operator", "ppe_tolerance", "centre_positions", "correction_threshold",
+                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
                                             "correction_max_iterations"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
@@ -249,6 +249,10 @@ void read_method(const Section& root, Scene& s) {
   s.ppe_solver = m.registered("ppe_solver", "ppe_solver", s.ppe_solver);
   // "approximate" (C&R eq. 19) | "exact" (C&R eq. 18, the 1D decoupling demonstration; KLU only)
   s.ppe_operator = m.one_of("ppe_operator", {"approximate", "exact"}, s.ppe_operator);
+  // Source of the PPE: "cummins_rudman" (C&R eq. 17, ghosts left out) | "difference" (Szewc eq. 19 / rho, ghosts in)
+  s.ppe_divergence = m.one_of("ppe_divergence", {"cummins_rudman", "difference"}, s.ppe_divergence);
+  // The free level of P (Neumann problem): "zero_mean" | "zero_min" (all P >= 0: eq. 11 then repels)
+  s.ppe_pressure_level = m.one_of("ppe_pressure_level", {"zero_mean", "zero_min"}, s.ppe_pressure_level);
   if (s.ppe_operator == "exact" && s.ppe_solver != "klu")
     m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);

@@ -87,6 +87,8 @@ std::string scene_to_toml(const Scene& s) {
     << "pressure_gradient = " << quote(s.pressure_gradient) << "\n"
     << "density_correction = " << quote(s.density_correction) << "\n"
     << "ppe_operator = " << quote(s.ppe_operator) << "\n"
+    << "ppe_divergence = " << quote(s.ppe_divergence) << "\n"
+    << "ppe_pressure_level = " << quote(s.ppe_pressure_level) << "\n"
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"

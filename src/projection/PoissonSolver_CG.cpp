@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 
+#include "core/errors.hpp"
 #include "projection/poisson_solver.hpp"
 
 namespace arksph {
@@ -22,7 +23,7 @@ class PoissonSolverCg final : public PoissonSolver {
     cg.setTolerance(tolerance_);
     cg.setMaxIterations(std::max<long>(200, 4 * A.rows()));
     cg.compute(A);
-    if (cg.info() != Eigen::Success) throw std::runtime_error(name_ + ": preconditioner failed");
+    if (cg.info() != Eigen::Success) throw NumericalFailure(name_ + ": preconditioner failed");
     const Eigen::Map<const Eigen::VectorXd> bb(b.data(), static_cast<long>(b.size()));
     if (p.size() != b.size()) p.assign(b.size(), 0.0);
     Vec pp(p.data(), static_cast<long>(p.size()));

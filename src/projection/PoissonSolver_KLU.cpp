@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/errors.hpp"
 #include "projection/poisson_solver.hpp"
 
 namespace arksph {
@@ -34,15 +35,15 @@ class PoissonSolverKlu final : public PoissonSolver {
     double* values = const_cast<double*>(A.valuePtr());
     if (numeric_ && same_pattern) {
       if (!klu_refactor(col_.data(), row_.data(), values, symbolic_, numeric_, &common_))
-        throw std::runtime_error("KLU refactor failed (status " + std::to_string(common_.status) + ")");
+        throw NumericalFailure("KLU refactor failed (singular pressure matrix?) (status " + std::to_string(common_.status) + ")");
     } else {
       if (numeric_) klu_free_numeric(&numeric_, &common_);
       numeric_ = klu_factor(col_.data(), row_.data(), values, symbolic_, &common_);
-      if (!numeric_) throw std::runtime_error("KLU factor failed (status " + std::to_string(common_.status) + ")");
+      if (!numeric_) throw NumericalFailure("KLU factor failed (singular pressure matrix?) (status " + std::to_string(common_.status) + ")");
     }
     p = b;
     if (!klu_solve(symbolic_, numeric_, n, 1, p.data(), &common_))
-      throw std::runtime_error("KLU solve failed (status " + std::to_string(common_.status) + ")");
+      throw NumericalFailure("KLU solve failed (status " + std::to_string(common_.status) + ")");
     rep.iterations = 1;
     rep.relative_residual = residual(A, b, p);
     return rep;

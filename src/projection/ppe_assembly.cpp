@@ -124,3 +124,22 @@ PoissonSystem assemble_ppe_exact(const FluidFields& f, const std::vector<double>
 }
 
 }  // namespace arksph
+
+namespace arksph {
+
+std::vector<double> divergence_difference(const FluidFields& f) {
+  std::vector<double> div(f.n_real, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    double s = 0;
+    const double ua = f.ud[a], va = f.dim == 2 ? f.vd[a] : 0.0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const double du = ua - f.ud[b], dv = f.dim == 2 ? va - f.vd[b] : 0.0;
+      s += f.m[b] * F * (du * rx + dv * ry);
+    });
+    div[a] = -s / f.rho[a];
+  }
+  return div;
+}
+
+}  // namespace arksph

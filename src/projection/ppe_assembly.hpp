@@ -48,3 +48,15 @@ namespace arksph {
 PoissonSystem assemble_ppe_exact(const FluidFields& f, const std::vector<double>& divergence, double dt);
 
 }  // namespace arksph
+
+namespace arksph {
+
+// The velocity divergence in difference form (the continuity operator of Szewc eq. 19 divided by
+// rho_a): div(u)_a = -(1/rho_a) sum_b m_b (u_a - u_b) . grad_a W_ab over real neighbours AND ghosts
+// (with their divergence velocities: free-slip images with boundary.free_slip_divergence). It
+// vanishes for a uniform field even where the support is cut by a wall, which C&R eq. 17 with the
+// ghosts left out does not: next to the corners of a driven lid that spurious source makes the
+// projection unstable. Sums to zero only approximately; assemble_ppe removes the mean.
+std::vector<double> divergence_difference(const FluidFields& f);
+
+}  // namespace arksph

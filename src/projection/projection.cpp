@@ -19,7 +19,9 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
       centre_positions_(scene.centre_positions),
-      exact_operator_(scene.ppe_operator == "exact") {
+      exact_operator_(scene.ppe_operator == "exact"),
+      difference_divergence_(scene.ppe_divergence == "difference"),
+      zero_min_level_(scene.ppe_pressure_level == "zero_min") {
   if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
 }
 
@@ -38,14 +40,17 @@ void Projection::project(double t, double* y) {
   const std::size_t n = L.n;
 
   // 2. Pressure Poisson equation.
-  const std::vector<double> div = divergence_cummins_rudman(f);
+  const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
   const PoissonSystem sys = exact_operator_? assemble_ppe_exact(f, div, dt) : assemble_ppe(f, div, dt);
   if (pressure_.size() != n) pressure_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
   const SolveReport rep = solver_->solve(sys.A, sys.b, pressure_);
   stats_.solve_seconds += since(ts);
-  const double mean = std::accumulate(pressure_.begin(), pressure_.end(), 0.0) / static_cast<double>(n);
-  for (double& p : pressure_) p -= mean;
+  // The level of P is free (Neumann walls) but matters to the symmetric gradient of eq. 11 on
+  // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract).
+  const double level = zero_min_level_ ? *std::min_element(pressure_.begin(), pressure_.end())
+                                       : std::accumulate(pressure_.begin(), pressure_.end(), 0.0) / static_cast<double>(n);
+  for (double& p : pressure_) p -= level;
   ++stats_.solves;
   stats_.iterations += rep.iterations;
   stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;

@@ -44,6 +44,8 @@ class Projection {
   std::unique_ptr<PoissonSolver> solver_;
   bool centre_positions_;
   bool exact_operator_;
+  bool difference_divergence_;
+  bool zero_min_level_;
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   std::vector<double> pressure_;

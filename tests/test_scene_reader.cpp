@@ -145,7 +145,7 @@ TEST_CASE("scene: the embedded default is the Re = 100 cavity") {
   CHECK(s.sound_speed == 10.0);
   CHECK(s.integrator == "ARKODE_HEUN_EULER_2_1_2");
   CHECK(s.dt == 0.0);
-  CHECK(s.end == 5.0);
+  CHECK(s.end == 2.0);
   CHECK(s.directory == "runs/default");
   CHECK(s.every == 0.5);
   CHECK(s.ghia_re == 100);

@@ -2,15 +2,18 @@
 // one on SIGINT/SIGTERM; and the state a restart starts from.
 //
 // Exact restart. A run restarted from a scheduled or final checkpoint continues bit for bit like
-// the run that never stopped (fixed step, same stop times), because at every checkpoint the
-// uninterrupted run drops the hidden state a restart cannot have:
-//   - the integrator is re-initialised at (t, y) with the step a new integrator would take
-//     (ErkIntegrator::restart_at), so no FSAL value, step history or time round-off survives;
+// the run that never stopped, provided both have the same stop times. Measured for WCSPH with a
+// fixed step and, with the same stop times, in adaptive mode too. This holds because at every
+// checkpoint the uninterrupted run drops the hidden state that a restart cannot have:
+//   - the integrator is re-initialised at (t, y) as a new one (ERKStepReInit, first step
+//     next_step), so no FSAL value, step-controller history or time round-off survives;
 //   - the RHS evaluator's Verlet list and ghost set are rebuilt at the next evaluation
 //     (RhsEvaluator::invalidate_neighbors), so pairs are summed in the same order;
-//   - checkpoint times are stop times of the integrator, like output times.
-// A checkpoint written on a signal is at an arbitrary step: a restart from it is a valid
-// continuation, not bit-identical to the uninterrupted run.
+//   - checkpoint times are stop times of the integrator, like output times, and both are
+//     computed by scheduled_time.
+// Not covered: the ISPH projection's warm starts (CG pressure guess, KLU refactorisation).
+// A checkpoint written on a signal falls at an arbitrary step, so a restart from it is a valid
+// continuation but not bit-identical to the uninterrupted run.
 #pragma once
 #include <string>
 

@@ -1,6 +1,7 @@
 // The run loop: step (ARKODE), check, diagnose, write. Reads like the algorithm:
 //   set up -> write t = 0 -> repeat { advance one step; check the state } and at each output time
-//   { refresh fields; diagnostics; write frame, CSV row } -> summary.json.
+//   { refresh fields; diagnostics; write frame, CSV row }, at each checkpoint time { checkpoint.h5 }
+//   -> checkpoint.h5, summary.json. A restart (options.restart) starts the same loop from a checkpoint.
 #include "app/simulation.hpp"
 
 #include <chrono>

@@ -50,7 +50,7 @@ h_over_dx = 2.0                # smoothing length h / dx, in [0.5, 4]
 viscosity_model = "morris"     # "direct" | "two_pass" | "violeau" | "cleary" | "morris"
 sound_speed = 10.0             # WCSPH sound speed c0 (>= 0; 0: the documented default); wcsph only
 tait_gamma = 7.0               # exponent of the Tait equation of state (>= 1), Cummins & Rudman eq. 7
-background_pressure = 0.0      # constant added to the Tait pressure (>= 0; Morris et al. 1997)
+background_pressure = 1.0      # constant added to the Tait pressure (>= 0; Morris et al. 1997); keeps p > 0 at the walls
 density_mode = "continuity"    # "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
 pressure_gradient = "colagrossi"   # "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
 density_correction = "none"    # "none" | "pozorski_wawrenczuk" (projection schemes only)
@@ -64,7 +64,7 @@ correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density er
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)
 
 [time]
-end = 5.0                      # final simulated time (> 0)
+end = 2.0                      # final simulated time (> 0); a coarse start-up, about 15 s on 2 cores
 integrator = "ARKODE_HEUN_EULER_2_1_2"   # ARKODE explicit Butcher table (arksph list)
 dt = 0.0                       # 0: adaptive, limited by the stability bounds; > 0: fixed step
 cfl = 0.25                     # coefficient of the stability limits, Szewc eqs. 34-35, in (0, 1]

@@ -107,6 +107,7 @@ void Checkpointer::at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, lo
   write(t, integrator, frames, reflections);
   integrator.restart_at(t, h);  // what a restart from this file does, see checkpointing.hpp
   rhs.invalidate_neighbors();
+  if (model_.projection) model_.projection->forget_warm_start();  // a restart starts the solvers cold
 }
 
 void Checkpointer::at_end(double t, ErkIntegrator& integrator, long frames, long reflections) {

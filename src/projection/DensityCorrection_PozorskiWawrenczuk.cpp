@@ -11,6 +11,7 @@ namespace arksph {
 DensityCorrection::DensityCorrection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
+      tolerance_(scene.ppe_tolerance),
       threshold_(scene.correction_threshold),
       max_iterations_(scene.correction_max_iterations) {}
 

@@ -32,11 +32,16 @@ class DensityCorrection {
   // Corrects the positions in y (time t) in place.
   void apply(double t, double* y);
   const CorrectionStats& stats() const { return stats_; }
+  void forget_warm_start() {
+    pstar_.clear();
+    solver_ = make_poisson_solver(solver_->name(), tolerance_);
+  }
 
  private:
   double density_error(double t, const double* y);  // refreshes fields; r.m.s. of rho~/rho0 about its mean
   RhsEvaluator& rhs_;
   std::unique_ptr<PoissonSolver> solver_;
+  double tolerance_;
   double threshold_;
   int max_iterations_;
   std::vector<double> pstar_;

@@ -18,11 +18,18 @@ double since(std::chrono::steady_clock::time_point t0) {
 Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
+      tolerance_(scene.ppe_tolerance),
       centre_positions_(scene.centre_positions),
       exact_operator_(scene.ppe_operator == "exact"),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min") {
   if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+}
+
+void Projection::forget_warm_start() {
+  pressure_.clear();
+  solver_ = make_poisson_solver(solver_->name(), tolerance_);
+  if (correction_) correction_->forget_warm_start();
 }
 
 void Projection::begin_step(double t, const double* y) {

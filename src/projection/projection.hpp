@@ -38,10 +38,14 @@ class Projection {
   const ProjectionStats& stats() const { return stats_; }
   std::string solver_name() const { return solver_->name(); }
   const DensityCorrection* correction() const { return correction_.get(); }
+  // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
+  // factorisation), so that a run restarted from a checkpoint continues bit for bit.
+  void forget_warm_start();
 
  private:
   RhsEvaluator& rhs_;
   std::unique_ptr<PoissonSolver> solver_;
+  double tolerance_;
   bool centre_positions_;
   bool exact_operator_;
   bool difference_divergence_;

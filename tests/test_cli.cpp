@@ -72,6 +72,16 @@ TEST_CASE("cli: every malformed scene in tests/bad_scenes exits 2 with one line 
       {"unknown_table", "solver"},               {"unknown_table_name", "time.integrator"},
       {"wrong_type_number", "fluid.spacing"},    {"wrong_type_string", "method.scheme"},
       {"zero_spacing", "fluid.spacing"},
+      {"boolean_for_number", "fluid.density"},   {"cfl_above_one", "time.cfl"},
+      {"density_correction_wcsph", "method.density_correction"},
+      {"domain_min_length", "domain.min"},       {"duplicate_key", ":10:11:"},
+      {"empty_file", "domain.min"},              {"exact_operator_cg", "method.ppe_operator"},
+      {"ghia_re_50", "metrics.ghia_re"},         {"h_too_small", "method.h_over_dx"},
+      {"invalid_escape", ":2:13:"},              {"negative_viscosity", "fluid.viscosity"},
+      {"non_utf8", ":2:11:"},                    {"offset_outside_domain", "initial.offset"},
+      {"one_d_with_top", "boundary.top"},        {"too_many_particles", "fluid.spacing"},
+      {"unknown_boundary_kind", "boundary.left.kind"}, {"unknown_root_key", "foo"},
+      {"zero_cfl", "time.cfl"},
   };
   int seen = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(ARKSPH_SOURCE_DIR) / "tests/bad_scenes")) {
@@ -86,7 +96,7 @@ TEST_CASE("cli: every malformed scene in tests/bad_scenes exits 2 with one line 
     CHECK(o.err.find(expected_key.at(stem)) != std::string::npos);
     ++seen;
   }
-  CHECK(seen >= 19);
+  CHECK(seen >= 37);
 }
 
 TEST_CASE("cli: bad options and missing files exit 2 with one line") {

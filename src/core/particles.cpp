@@ -1,11 +1,21 @@
 #include "core/particles.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/errors.hpp"
 #include "io/expression.hpp"
 
 namespace arksph {
+
+namespace {
+std::string format_coord(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+}  // namespace
 
 ParticleSet make_lattice(const Scene& scene) {
   ParticleSet ps;
@@ -42,8 +52,15 @@ ParticleSet make_lattice(const Scene& scene) {
           rho = scene.phases[p].density;
         }
       }
-      ps.init_pos[0].push_back(x + offset[0].eval(x, y, 0.0));
-      if (ps.dim == 2) ps.init_pos[1].push_back(y + offset[1].eval(x, y, 0.0));
+      const double px = x + offset[0].eval(x, y, 0.0);
+      const double py = ps.dim == 2 ? y + offset[1].eval(x, y, 0.0) : 0.0;
+      const bool inside = px >= scene.min[0] && px <= scene.max[0] &&
+                          (ps.dim == 1 || (py >= scene.min[1] && py <= scene.max[1]));
+      if (!inside)
+        throw InputError(scene.source + ": initial.offset: moves particle at (" + format_coord(x) + ", " +
+                         format_coord(y) + ") outside the domain");
+      ps.init_pos[0].push_back(px);
+      if (ps.dim == 2) ps.init_pos[1].push_back(py);
       for (int k = 0; k < ps.dim; ++k) ps.init_vel[k].push_back(vel[k].eval(x, y, 0.0));
       ps.mass.push_back(rho * cell_volume);
       ps.rho0.push_back(rho);

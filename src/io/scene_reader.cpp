@@ -191,6 +191,11 @@ void read_fluid(const Section& root, Scene& s) {
   s.spacing = f.number("spacing", std::nullopt);  // initial lattice spacing dx
   f.require(s.spacing > 0, "spacing", "> 0", s.spacing);
   for (std::size_t d = 0; d < dim; ++d) check_lattice(f, s.spacing, s.max[d] - s.min[d], d);
+  // A count no machine holds must be a message, not std::bad_alloc (or an endless phase check).
+  double particles = 1;
+  for (std::size_t d = 0; d < dim; ++d) particles *= std::round((s.max[d] - s.min[d]) / s.spacing);
+  if (!(particles <= 2e8))
+    f.fail("spacing", format_number(particles) + " particles exceed the limit of 2e8");
   s.density = f.number("density", s.density);  // reference density rho0
   f.require(s.density > 0, "density", "> 0", s.density);
   s.viscosity = f.number("viscosity", s.viscosity);  // kinematic viscosity nu

@@ -17,7 +17,7 @@
 namespace {
 
 const char* kUsage =
-    "arksph - SPH for incompressible viscous flow (WCSPH on SUNDIALS ARKODE)\n"
+    "arksph - SPH for incompressible viscous flow (WCSPH and ISPH on SUNDIALS ARKODE)\n"
     "\n"
     "usage:\n"
     "  arksph run [SCENE.toml] [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
@@ -48,7 +48,7 @@ std::string toml_quote(const std::string& s) {
 
 int cmd_list() {
   const char* families[] = {"scheme", "kernel", "viscosity_model", "pressure_gradient", "density_mode",
-                            "density_correction", "erk_table"};
+                            "density_correction", "ppe_solver", "erk_table"};
   for (const char* fam : families) {
     std::printf("%s:\n", fam);
     for (const auto& n : arksph::registered_names(fam)) {

@@ -70,6 +70,7 @@ struct Scene {
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)
   double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
   int correction_max_iterations = 1;   // pozorski_wawrenczuk: Poisson solves per step at most
+  std::string correction_solver = "fixed_point";  // pozorski_wawrenczuk: "fixed_point" | "kinsol"
 
   // [time]
   double end = 1.0;

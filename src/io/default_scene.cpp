@@ -62,6 +62,7 @@ ppe_tolerance = 1e-10          # isph with cg: relative residual
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)
+correction_solver = "fixed_point"  # pozorski_wawrenczuk: "fixed_point" (linear solves) | "kinsol" (Newton, KLU)
 
 [time]
 end = 2.0                      # final simulated time (> 0); a coarse start-up, about 15 s on 2 cores

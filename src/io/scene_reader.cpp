@@ -229,7 +229,7 @@ void read_method(const Section& root, Scene& s) {
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
                                             "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
-                                            "correction_max_iterations"});
+                                            "correction_max_iterations", "correction_solver"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
   s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
@@ -270,6 +270,9 @@ void read_method(const Section& root, Scene& s) {
   m.require(iters >= 1 && iters <= 1000 && iters == std::floor(iters), "correction_max_iterations",
             "a whole number in [1, 1000]", iters);
   s.correction_max_iterations = static_cast<int>(iters);
+  // "fixed_point": repeated linear solves of eq. 58; "kinsol": KINSOL Newton on eq. 59 with the
+  // Laplacian as frozen Jacobian (KLU)
+  s.correction_solver = m.one_of("correction_solver", {"fixed_point", "kinsol"}, s.correction_solver);
 }
 
 void read_time_output(const Section& root, Scene& s) {

@@ -93,7 +93,8 @@ std::string scene_to_toml(const Scene& s) {
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"
     << "correction_threshold = " << num(s.correction_threshold) << "\n"
-    << "correction_max_iterations = " << s.correction_max_iterations << "\n\n";
+    << "correction_max_iterations = " << s.correction_max_iterations << "\n"
+    << "correction_solver = " << quote(s.correction_solver) << "\n\n";
   o << "[time]\n"
     << "end = " << num(s.end) << "\n"
     << "integrator = " << quote(s.integrator) << "\n"

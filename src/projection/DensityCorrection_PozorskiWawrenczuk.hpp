@@ -44,6 +44,7 @@ class DensityCorrection {
   double tolerance_;
   double threshold_;
   int max_iterations_;
+  bool use_kinsol_;
   std::vector<double> pstar_;
   CorrectionStats stats_;
 };

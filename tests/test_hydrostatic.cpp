@@ -9,26 +9,18 @@
 #include "app/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
+#include "test_support.hpp"
 
 using namespace arksph;
 
 namespace {
 std::vector<double> one_step_pressure(const std::string& op) {
-  std::ostringstream warnings;
   const Scene scene = read_scene_file(std::string(ARKSPH_SOURCE_DIR) + "/cases/hydrostatic_1d/scene.toml",
                                       {"method.ppe_operator=" + op});
   Model model = build_model(scene);
-  std::vector<double> y0(model.rhs->layout().size());
-  model.rhs->initial_state(y0.data());
-  ErkOptions o;
-  o.table = scene.integrator;
-  o.fixed_dt = scene.dt;
-  Projection* proj = model.projection.get();
-  o.postprocess = [proj](double t, double* y) { proj->project(t, y); };
-  ErkIntegrator integ([&](double t, const double* y, double* yd) { model.rhs->eval(t, y, yd); }, y0, 0.0, o);
-  proj->begin_step(0.0, y0.data());
-  integ.step(scene.dt);
-  return proj->pressure();
+  std::vector<double> y0;
+  testing::one_projected_step(scene, model, y0);
+  return model.projection->pressure();
 }
 
 // Odd-even roughness: sum |P_{i+1} - 2 P_i + P_{i-1}| over sum |P_{i+1} - P_{i-1}|; 0 for a

@@ -11,6 +11,7 @@
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/ppe_assembly.hpp"
+#include "test_support.hpp"
 
 using namespace arksph;
 
@@ -156,18 +157,9 @@ TEST_CASE("isph: one ARKODE step of C&R's scheme equals a direct implementation 
   Model model = build_model(scene);
   REQUIRE(model.projection);
   const StateLayout& L = model.rhs->layout();
-  std::vector<double> y0(L.size());
-  model.rhs->initial_state(y0.data());
-
-  ErkOptions o;
-  o.table = scene.integrator;
-  o.fixed_dt = scene.dt;
-  Projection* proj = model.projection.get();
-  o.postprocess = [proj](double t, double* y) { proj->project(t, y); };
-  ErkIntegrator integ([&](double t, const double* y, double* yd) { model.rhs->eval(t, y, yd); }, y0, 0.0, o);
-  proj->begin_step(0.0, y0.data());
-  integ.step(scene.dt);
-  const double* y1 = integ.state();
+  std::vector<double> y0;
+  const std::vector<double> y1 = testing::one_projected_step(scene, model, y0);
+  const Projection* proj = model.projection.get();
 
   std::vector<Point> start;
   for (std::size_t a = 0; a < L.n; ++a)

@@ -158,3 +158,22 @@ TEST_CASE("cases: Poiseuille start-up at Re = 0.5 stays within 2% of the series 
   CHECK(eps_max <= 0.02);
   CHECK(json_number(summary, "poiseuille_tstar") == doctest::Approx(2.0).epsilon(1e-9));
 }
+
+// A step far beyond the stability limit (dt = 0.05 against ~1.6e-3) blows the cavity up: exit 3,
+// one line naming the time, the particle id and the quantity; what was written stays valid.
+TEST_CASE("cli: a blow-up exits 3 with a one-line diagnosis and keeps the frames written so far") {
+  const fs::path dir = fs::temp_directory_path() / ("arksph_blowup_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  const Outcome o = run_arksph("run --quiet --set time.dt=0.05 --set time.end=5 --set output.every=0.1 --out " +
+                               dir.string());
+  CHECK(o.code == 3);
+  CHECK(count_lines(o.err) == 1);
+  CHECK(o.err.find("particle id") != std::string::npos);
+  CHECK(o.err.find("t = ") != std::string::npos);
+  const std::string summary = read_file(dir / "summary.json");
+  CHECK(summary.find("\"status\": \"failed\"") != std::string::npos);
+  CHECK(fs::exists(dir / "particles_000000.vtp"));  // the t = 0 frame, listed in the collection
+  CHECK(read_file(dir / "particles.pvd").find("particles_000000.vtp") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "particles_000000.vtp.tmp"));
+  fs::remove_all(dir);
+}

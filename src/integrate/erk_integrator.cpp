@@ -5,6 +5,7 @@
 #include <nvector/nvector_serial.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/errors.hpp"
@@ -22,6 +23,14 @@ ARKodeButcherTable load_table(const std::string& name) {
                                      const_cast<sunrealtype*>(b), nullptr);
   }
   return ARKodeButcherTable_LoadERKByName(name.c_str());
+}
+
+// ERKStepGetReturnFlagName returns a malloc'ed string: copy it and free it.
+std::string flag_name(int flag) {
+  char* name = ERKStepGetReturnFlagName(flag);
+  std::string out = name ? name : "unknown";
+  std::free(name);
+  return out;
 }
 
 int check(int flag, const char* call) {
@@ -154,7 +163,7 @@ double ErkIntegrator::evolve_to(double tout) {
   const int flag = ERKStepEvolve(mem_, tout, y_, &t_, ARK_NORMAL);
   if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
                                        " with flag " + std::to_string(flag) + " (" +
-                                       ERKStepGetReturnFlagName(flag) + "; " + last_message_ + ")");
+                                       flag_name(flag) + "; " + last_message_ + ")");
   return t_;
 }
 
@@ -171,7 +180,7 @@ double ErkIntegrator::step(double tstop) {
     }
     const int flag = ERKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP);
     if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) + " with flag " +
-                                         std::to_string(flag) + " (" + ERKStepGetReturnFlagName(flag) + "; " +
+                                         std::to_string(flag) + " (" + flag_name(flag) + "; " +
                                          last_message_ + ")");
     if (std::abs(tstop - t_) <= 1e-12 * std::max(1.0, std::abs(tstop))) t_ = tstop;  // round-off of t + h
     return t_;
@@ -180,7 +189,7 @@ double ErkIntegrator::step(double tstop) {
   const int flag = ERKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP);
   if (flag < 0) throw NumericalFailure("ARKODE: ERKStepEvolve failed at t = " + std::to_string(t_) +
                                        " with flag " + std::to_string(flag) + " (" +
-                                       ERKStepGetReturnFlagName(flag) + "; " + last_message_ + ")");
+                                       flag_name(flag) + "; " + last_message_ + ")");
   return t_;
 }
 

@@ -56,15 +56,7 @@ void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, c
   pairs.count.assign(n_real, 0);
   if (pairs.stride == 0) pairs.stride = 16;
   for (;;) {
-    const std::size_t cap = n_real * pairs.stride;
-    if (pairs.j.size() < cap) {
-      pairs.j.resize(cap);
-      pairs.rx.resize(cap);
-      pairs.ry.resize(cap);
-      pairs.r2.resize(cap);
-      pairs.w.resize(cap);
-      pairs.f.resize(cap);
-    }
+    pairs.reserve(n_real * pairs.stride);
     std::size_t overflow = 0;
 #pragma omp parallel for schedule(static) reduction(max : overflow)
     for (std::size_t a = 0; a < n_real; ++a) {
@@ -128,15 +120,7 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
   pairs.n_real = n_real;
   pairs.stride = stride;
   pairs.count.assign(n_real, 0);
-  const std::size_t cap = n_real * stride;
-  if (pairs.j.size() < cap) {
-    pairs.j.resize(cap);
-    pairs.rx.resize(cap);
-    pairs.ry.resize(cap);
-    pairs.r2.resize(cap);
-    pairs.w.resize(cap);
-    pairs.f.resize(cap);
-  }
+  pairs.reserve(n_real * stride);
   const double r_max2 = kernel.radius() * kernel.radius();
   // Raw pointers: the compiler need not reload the vectors' data after every store.
   std::uint32_t* __restrict pj = pairs.j.data();

@@ -50,6 +50,16 @@ struct PairList {
   std::vector<std::uint32_t> count;  // neighbours of a
   std::vector<std::uint32_t> j;      // index b of the k-th neighbour of a: j[a * stride + k]
   std::vector<double> rx, ry, r2, w, f;
+  // Grows the per-pair arrays to hold cap entries (never shrinks: no allocation in steady state).
+  void reserve(std::size_t cap) {
+    if (j.size() >= cap) return;
+    j.resize(cap);
+    rx.resize(cap);
+    ry.resize(cap);
+    r2.resize(cap);
+    w.resize(cap);
+    f.resize(cap);
+  }
   template <class Body>
   void for_pairs(std::size_t a, Body&& body) const {
     const std::size_t base = a * stride, end = base + count[a];

@@ -65,7 +65,7 @@ correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step
 correction_solver = "fixed_point"  # pozorski_wawrenczuk: "fixed_point" (linear solves) | "kinsol" (Newton, KLU)
 
 [time]
-end = 2.0                      # final simulated time (> 0); a coarse start-up, about 15 s on 2 cores
+end = 2.0                      # final simulated time (> 0); a coarse start-up, a few seconds on 2 cores
 integrator = "ARKODE_HEUN_EULER_2_1_2"   # ARKODE explicit Butcher table (arksph list)
 dt = 0.0                       # 0: adaptive, limited by the stability bounds; > 0: fixed step
 cfl = 0.25                     # coefficient of the stability limits, Szewc eqs. 34-35, in (0, 1]

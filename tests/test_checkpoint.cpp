@@ -22,58 +22,21 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "test_support.hpp"
 #include "io/checkpoint.hpp"
 #include "io/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace arksph;
+using arksph::testing::ScratchDir;
+using arksph::testing::slurp;
 
 namespace {
 
-// A fresh directory under the system temp dir, removed at scope exit.
-struct ScratchDir {
-  fs::path dir;
-  explicit ScratchDir(const std::string& tag) {
-    dir = fs::temp_directory_path() / ("arksph_ckpt_" + tag + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
-};
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The doubly periodic Taylor-Green box of test_wcsph.cpp, with a fixed step and checkpoints.
-const char* kTaylorGreen = R"toml(
-[scene]
-name = "tg_restart"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[boundary]
-left = { kind = "periodic" }
-right = { kind = "periodic" }
-bottom = { kind = "periodic" }
-top = { kind = "periodic" }
-[fluid]
-spacing = 0.0625
-viscosity = 0.01
-[initial]
-velocity = ["sin(2*pi*x)*cos(2*pi*y)", "-cos(2*pi*x)*sin(2*pi*y)"]
-[method]
-scheme = "wcsph"
-kernel = "wendland_quintic"
-h_over_dx = 1.5
-sound_speed = 10
+const std::string kTaylorGreen = arksph::testing::kTaylorGreenBox + R"toml(
 [time]
 end = 0.2
 dt = 0.002

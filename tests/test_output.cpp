@@ -22,6 +22,7 @@
 #include <sys/stat.h>
 #include <vector>
 
+#include "test_support.hpp"
 #include "io/csv_writer.hpp"
 #include "io/output_fields.hpp"
 #include "io/pvd_writer.hpp"
@@ -30,31 +31,12 @@
 
 namespace fs = std::filesystem;
 using namespace arksph;
+using arksph::testing::ScratchDir;
+using arksph::testing::slurp;
 
 namespace {
 
-// A fresh directory under the system temp dir, removed at scope exit.
-struct ScratchDir {
-  fs::path dir;
-  explicit ScratchDir(const std::string& tag) {
-    dir = fs::temp_directory_path() / ("arksph_test_" + tag + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add, ec);
-    fs::remove_all(dir, ec);
-  }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
-};
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 bool has_tmp_file(const fs::path& dir) {
   for (const auto& e : fs::directory_iterator(dir))

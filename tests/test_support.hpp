@@ -1,11 +1,66 @@
 // Helpers shared by the test files.
 #pragma once
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "app/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 
 namespace arksph::testing {
+
+// A doubly periodic box with a smooth, divergence-free initial velocity (Taylor-Green vortex),
+// WCSPH; callers append their own [time] (and [output]) tables.
+inline const std::string kTaylorGreenBox = R"toml(
+[scene]
+name = "periodic_box"
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[boundary]
+left = { kind = "periodic" }
+right = { kind = "periodic" }
+bottom = { kind = "periodic" }
+top = { kind = "periodic" }
+[fluid]
+spacing = 0.0625
+viscosity = 0.01
+[initial]
+velocity = ["sin(2*pi*x)*cos(2*pi*y)", "-cos(2*pi*x)*sin(2*pi*y)"]
+[method]
+scheme = "wcsph"
+kernel = "wendland_quintic"
+h_over_dx = 1.5
+sound_speed = 10
+)toml";
+
+// A fresh directory under the system temp dir, removed (permissions restored first) at scope exit.
+struct ScratchDir {
+  std::filesystem::path dir;
+  explicit ScratchDir(const std::string& tag) {
+    dir = std::filesystem::temp_directory_path() / ("arksph_test_" + tag + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::permissions(dir, std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ec);
+    std::filesystem::remove_all(dir, ec);
+  }
+  std::string operator/(const std::string& name) const { return (dir / name).string(); }
+};
+
+// The whole file as a string (empty if it cannot be read).
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
 
 // One fixed step of the scene's ERKStep table followed by the projection (the run loop's step for
 // scheme isph), from the initial state y0 (filled here). Returns the state after the step.

@@ -10,32 +10,13 @@
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "rhs/terms.hpp"
+#include "test_support.hpp"
 
 using namespace arksph;
 
 namespace {
-// A doubly periodic box with a smooth, divergence-free initial velocity (Taylor-Green vortex).
-const char* kPeriodicScene = R"toml(
-[scene]
-name = "periodic_box"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[boundary]
-left = { kind = "periodic" }
-right = { kind = "periodic" }
-bottom = { kind = "periodic" }
-top = { kind = "periodic" }
-[fluid]
-spacing = 0.0625
-viscosity = 0.01
-[initial]
-velocity = ["sin(2*pi*x)*cos(2*pi*y)", "-cos(2*pi*x)*sin(2*pi*y)"]
-[method]
-scheme = "wcsph"
-kernel = "wendland_quintic"
-h_over_dx = 1.5
-sound_speed = 10
+// The Taylor-Green box of test_support.hpp, to t = 0.05.
+const std::string kPeriodicScene = testing::kTaylorGreenBox + R"toml(
 [time]
 end = 0.05
 )toml";

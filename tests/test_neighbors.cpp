@@ -67,27 +67,33 @@ std::size_t compare_with_brute(const std::vector<double>& x, const std::vector<d
   std::size_t total = 0, mismatched = 0, bad_values = 0;
   for (std::size_t a = 0; a < n_real; ++a) {
     auto expect = brute(x, yp, a, radius);
-    std::vector<std::pair<std::uint32_t, std::size_t>> got;  // (b, slot)
+    struct Got {
+      std::uint32_t b;
+      double rx, ry, r2, w, f;
+    };
+    std::vector<Got> got;
     CHECK(pairs.count[a] <= pairs.stride);
-    for (std::size_t s = a * pairs.stride; s < a * pairs.stride + pairs.count[a]; ++s) got.push_back({pairs.j[s], s});
-    std::sort(got.begin(), got.end());
+    pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double f) {
+      got.push_back({b, rx, ry, r2, w, f});
+    });
+    std::sort(got.begin(), got.end(), [](const Got& l, const Got& r) { return l.b < r.b; });
     total += got.size();
     if (got.size() != expect.size()) {
       ++mismatched;
       continue;
     }
     for (std::size_t m = 0; m < got.size(); ++m) {
-      if (got[m].first != expect[m].b) {
+      if (got[m].b != expect[m].b) {
         ++mismatched;
         break;
       }
-      const std::size_t s = got[m].second;
+      const Got& g = got[m];
       const double r = std::sqrt(expect[m].r2);
       double w, f;
       k.eval(r, w, f);
-      if (std::abs(pairs.rx[s] - expect[m].rx) > kPosTol || std::abs(pairs.ry[s] - expect[m].ry) > kPosTol ||
-          std::abs(pairs.r2[s] - expect[m].r2) > kPosTol || std::abs(pairs.w[s] - w) > kKernelTol * wscale ||
-          std::abs(pairs.f[s] - f) > kKernelTol * fscale)
+      if (std::abs(g.rx - expect[m].rx) > kPosTol || std::abs(g.ry - expect[m].ry) > kPosTol ||
+          std::abs(g.r2 - expect[m].r2) > kPosTol || std::abs(g.w - w) > kKernelTol * wscale ||
+          std::abs(g.f - f) > kKernelTol * fscale)
         ++bad_values;
     }
   }
@@ -187,8 +193,8 @@ TEST_CASE("neighbors: 1D points with y = nullptr, including two coincident parti
     CHECK(f == 0.0);
   });
   CHECK(found);
-  for (std::size_t s = 0; s < x.size() * pairs.stride; ++s)
-    if (s % pairs.stride < pairs.count[s / pairs.stride]) REQUIRE(pairs.ry[s] == 0.0);
+  for (std::size_t a = 0; a < x.size(); ++a)
+    pairs.for_pairs(a, [&](std::uint32_t, double, double ry, double, double, double) { REQUIRE(ry == 0.0); });
 }
 
 TEST_CASE("neighbors: only the first n_real points get lists, but all points are candidates") {

@@ -20,6 +20,13 @@ struct WendlandQuintic {
     f = s3 * s * (2.0 * q + 1.0);
     df = -5.0 * q * s3;  // d/dq [(1-q/2)^4 (2q+1)] = -5 q (1-q/2)^3
   }
+  // f and f'(q) / q = -5 (1 - q/2)^3: the gradient factor without a division (hot pair loop).
+  static inline void eval_over_q(double q, double& f, double& df_over_q) {
+    const double s = q < 2.0 ? 1.0 - 0.5 * q : 0.0;
+    const double s3 = s * s * s;
+    f = s3 * s * (2.0 * q + 1.0);
+    df_over_q = -5.0 * s3;
+  }
 };
 
 }  // namespace arksph

@@ -22,6 +22,7 @@ Kernel::Kernel(std::string name, KernelShapeId shape, double h, int dimension)
     case KernelShapeId::quintic_spline: shape_constants<QuinticSpline>(dimension, sigma, support); break;
   }
   norm_ = sigma / std::pow(h, dimension);
+  norm_inv_h2_ = norm_ * inv_h_ * inv_h_;
   radius_ = support * h;
 }
 

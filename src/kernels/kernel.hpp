@@ -3,6 +3,8 @@
 // kernel_registry.cpp. Kernel::eval dispatches on the shape with a switch that the compiler hoists
 // out of pair loops, so the shape's polynomial is inlined.
 #pragma once
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -34,11 +36,12 @@ class Kernel {
     return norm_ * inv_h_ * dfq;
   }
   // Both at once: w = W(r), f = (dW/dr) / r, so that grad_a W_ab = f * r_ab (f = 0 at r = 0).
+  // With q = r / h: (dW/dr) / r = norm / h^2 * f'(q) / q.
   void eval(double r, double& w, double& f_over_r) const {
-    double fq, dfq;
-    shape(r * inv_h_, fq, dfq);
+    double fq, dfq_over_q;
+    shape_over_q(r * inv_h_, fq, dfq_over_q);
     w = norm_ * fq;
-    f_over_r = r > 0 ? norm_ * inv_h_ * dfq / r : 0.0;
+    f_over_r = r > 0 ? norm_inv_h2_ * dfq_over_q : 0.0;
   }
 
  private:
@@ -51,9 +54,52 @@ class Kernel {
     }
     f = df = 0.0;
   }
+  // f(q) and f'(q) / q; the Wendland shape provides it without a division.
+  void shape_over_q(double q, double& f, double& df_over_q) const {
+    if (shape_ == KernelShapeId::wendland_quintic) return WendlandQuintic::eval_over_q(q, f, df_over_q);
+    double df;
+    shape(q, f, df);
+    df_over_q = q > 0 ? df / q : 0.0;
+  }
+
+ public:
+  // W and (dW/dr)/r for n squared distances (r2[i] -> w[i], f[i]; f may alias r2), the shape chosen
+  // once outside the loop so that the loop body is one inlined polynomial (the pair-list hot path).
+  // Same values as eval(sqrt(r2[i]), ...).
+  void eval_many(std::size_t n, const double* r2, double* w, double* f) const {
+    switch (shape_) {
+      case KernelShapeId::cubic_spline: return eval_many_as<CubicSpline>(n, r2, w, f);
+      case KernelShapeId::quartic_spline: return eval_many_as<QuarticSpline>(n, r2, w, f);
+      case KernelShapeId::wendland_quintic: return eval_many_as<WendlandQuintic>(n, r2, w, f);
+      case KernelShapeId::quintic_spline: return eval_many_as<QuinticSpline>(n, r2, w, f);
+    }
+  }
+
+ private:
+  template <class Shape>
+  static void over_q(double q, double& fq, double& g) {
+    if constexpr (requires { Shape::eval_over_q(q, fq, g); }) {
+      Shape::eval_over_q(q, fq, g);
+    } else {
+      double df;
+      Shape::eval(q, fq, df);
+      g = q > 0 ? df / q : 0.0;
+    }
+  }
+  template <class Shape>
+  void eval_many_as(std::size_t n, const double* r2, double* w, double* f) const {
+    const double inv_h = inv_h_, norm = norm_, norm_inv_h2 = norm_inv_h2_;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double rr = r2[i];
+      double fq, g;
+      over_q<Shape>(std::sqrt(rr) * inv_h, fq, g);
+      w[i] = norm * fq;
+      f[i] = rr > 0 ? norm_inv_h2 * g : 0.0;
+    }
+  }
   std::string name_;
   KernelShapeId shape_;
-  double h_, inv_h_, norm_, radius_;
+  double h_, inv_h_, norm_, radius_, norm_inv_h2_;
   int dim_;
 };
 

@@ -53,6 +53,8 @@ void CellList::build(const double* x, const double* y, std::size_t n, double rad
 void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, const double* y,
                  std::size_t n_real, PairList& pairs) {
   pairs.n_real = n_real;
+  pairs.px = x;
+  pairs.py = y;
   pairs.count.assign(n_real, 0);
   if (pairs.stride == 0) pairs.stride = 16;
   for (;;) {
@@ -69,9 +71,6 @@ void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, c
           double w, f;
           kernel.eval(std::sqrt(r2), w, f);
           pairs.j[base + k] = b;
-          pairs.rx[base + k] = dx;
-          pairs.ry[base + k] = dy;
-          pairs.r2[base + k] = r2;
           pairs.w[base + k] = w;
           pairs.f[base + k] = f;
         }
@@ -119,14 +118,13 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
   const std::size_t n_real = cand.n_real, stride = cand.stride;
   pairs.n_real = n_real;
   pairs.stride = stride;
+  pairs.px = x;
+  pairs.py = y;
   pairs.count.assign(n_real, 0);
   pairs.reserve(n_real * stride);
   const double r_max2 = kernel.radius() * kernel.radius();
   // Raw pointers: the compiler need not reload the vectors' data after every store.
   std::uint32_t* __restrict pj = pairs.j.data();
-  double* __restrict prx = pairs.rx.data();
-  double* __restrict pry = pairs.ry.data();
-  double* __restrict pr2 = pairs.r2.data();
   double* __restrict pw = pairs.w.data();
   double* __restrict pf = pairs.f.data();
   std::uint32_t* __restrict pcount = pairs.count.data();
@@ -137,20 +135,18 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
     const std::size_t base = a * stride;
     std::size_t k = base;
     const double xa = x[a], ya = y ? y[a] : 0.0;
-    // Pass 1: distances, compacted to the pairs inside the support (no kernel yet).
+    // Pass 1: squared distances (kept in f for now), compacted to the pairs inside the support.
     for (std::size_t c = base; c < base + ccount[a]; ++c) {
       const std::uint32_t b = cj[c];
       const double dx = xa - x[b], dy = y ? ya - y[b] : 0.0;
       const double r2 = dx * dx + dy * dy;
       pj[k] = b;
-      prx[k] = dx;
-      pry[k] = dy;
-      pr2[k] = r2;
+      pf[k] = r2;
       k += r2 < r_max2 ? 1 : 0;  // branch-free compaction
     }
     pcount[a] = static_cast<std::uint32_t>(k - base);
     // Pass 2: kernel values of the kept pairs.
-    for (std::size_t i = base; i < k; ++i) kernel.eval(std::sqrt(pr2[i]), pw[i], pf[i]);
+    kernel.eval_many(k - base, pf + base, pw + base, pf + base);
   }
 }
 

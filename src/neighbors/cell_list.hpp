@@ -44,26 +44,34 @@ class CellList {
 
 // Neighbour pairs of each real particle a (a < n_real) among all points, self excluded, with
 // r_ab = r_a - r_b, the kernel value W_ab and F_ab = (dW/dr)/r, so that grad_a W_ab = F_ab r_ab.
-// Stored with a fixed stride per particle so that it is filled in parallel without atomics.
+// Stored with a fixed stride per particle so that it is filled in parallel without atomics. Only the
+// index, W and F are stored (16 + 4 bytes a pair); r_ab is recomputed from the positions the list was
+// built from (px, py, which must outlive the list's use), in the same floating-point operations as
+// when the pair was found, so results do not depend on the storage.
 struct PairList {
   std::size_t n_real = 0, stride = 0;
   std::vector<std::uint32_t> count;  // neighbours of a
   std::vector<std::uint32_t> j;      // index b of the k-th neighbour of a: j[a * stride + k]
-  std::vector<double> rx, ry, r2, w, f;
+  std::vector<double> w, f;
+  const double* px = nullptr;  // positions of all points (py null in 1D)
+  const double* py = nullptr;
   // Grows the per-pair arrays to hold cap entries (never shrinks: no allocation in steady state).
   void reserve(std::size_t cap) {
     if (j.size() >= cap) return;
     j.resize(cap);
-    rx.resize(cap);
-    ry.resize(cap);
-    r2.resize(cap);
     w.resize(cap);
     f.resize(cap);
   }
+  // body(b, rx, ry, r2, W_ab, F_ab) for every neighbour b of a.
   template <class Body>
   void for_pairs(std::size_t a, Body&& body) const {
     const std::size_t base = a * stride, end = base + count[a];
-    for (std::size_t k = base; k < end; ++k) body(j[k], rx[k], ry[k], r2[k], w[k], f[k]);
+    const double xa = px[a], ya = py ? py[a] : 0.0;
+    for (std::size_t k = base; k < end; ++k) {
+      const std::uint32_t b = j[k];
+      const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
+      body(b, rx, ry, rx * rx + ry * ry, w[k], f[k]);
+    }
   }
 };
 

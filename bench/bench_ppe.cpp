@@ -1,0 +1,59 @@
+// ISPH pressure Poisson equation: divergence + assembly (C&R eqs. 17, 19) and each solver. KLU is
+// timed both fresh (symbolic + numeric factorisation) and as in a running simulation (same pattern,
+// numeric refactorisation only); CG and CG-IC warm-started from the previous pressure, as in a run.
+#include <benchmark/benchmark.h>
+
+#include "bench_scenes.hpp"
+#include "projection/poisson_solver.hpp"
+#include "projection/ppe_assembly.hpp"
+
+namespace arksph::bench {
+namespace {
+
+constexpr double kDt = 1e-3;
+
+void BM_PpeAssembly(benchmark::State& state) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "isph");
+  const FluidFields& f = p.model.rhs->fields();
+  for (auto _ : state) {
+    const auto div = divergence_cummins_rudman(f);
+    PoissonSystem sys = assemble_ppe(f, div, kDt);
+    benchmark::DoNotOptimize(sys.b.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(f.n_real));
+}
+
+// fresh: a new solver object each time (full factorisation / cold start); else one solver reused.
+void BM_Solve(benchmark::State& state, const std::string& solver, bool fresh) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "isph");
+  const FluidFields& f = p.model.rhs->fields();
+  const PoissonSystem sys = assemble_ppe(f, divergence_cummins_rudman(f), kDt);
+  auto s = make_poisson_solver(solver, 1e-8);
+  std::vector<double> pressure(f.n_real, 0.0);
+  s->solve(sys.A, sys.b, pressure);  // warm-up: the state of a solver in a running simulation
+  long iterations = 0;
+  // A running simulation solves a nearby system each step: perturb the source by 1e-3 relative.
+  std::vector<double> b = sys.b;
+  int k = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < b.size(); ++i) b[i] = sys.b[i] * (1.0 + 1e-3 * ((i + k) % 7 == 0));
+    ++k;
+    if (fresh) {
+      s = make_poisson_solver(solver, 1e-8);
+      std::fill(pressure.begin(), pressure.end(), 0.0);
+    }
+    iterations += s->solve(sys.A, b, pressure).iterations;
+  }
+  state.counters["iterations"] = static_cast<double>(iterations) / static_cast<double>(state.iterations());
+  state.counters["N"] = static_cast<double>(f.n_real);
+}
+
+BENCHMARK(BM_PpeAssembly)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, klu_fresh, std::string("klu"), true)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, klu_same_pattern, std::string("klu"), false)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, cg_warm, std::string("cg"), false)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, cg_ic_warm, std::string("cg_ic"), false)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, cg_cold, std::string("cg"), true)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace arksph::bench

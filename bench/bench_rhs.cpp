@@ -1,0 +1,42 @@
+// The WCSPH right-hand side: the whole f(t, y) (steady state between neighbour rebuilds, as in a
+// running simulation) and each physical term on its own. items_per_second of BM_RhsEval is the
+// particle-evaluation rate of issue 8 (target >= 5e6 on 2 threads with about 50 neighbours).
+#include <benchmark/benchmark.h>
+
+#include "bench_scenes.hpp"
+#include "rhs/terms.hpp"
+
+namespace arksph::bench {
+namespace {
+
+void BM_RhsEval(benchmark::State& state) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "wcsph");
+  for (auto _ : state) {
+    p.model.rhs->eval(0.0, p.y.data(), p.ydot.data());
+    benchmark::DoNotOptimize(p.ydot.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(p.model.rhs->layout().n));
+}
+
+// One term applied to a copy of the fields of a full evaluation.
+void BM_Term(benchmark::State& state, const std::string& term_name) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "wcsph");
+  FluidFields f = p.model.rhs->fields();
+  auto terms = terms_from_scene(p.scene, p.model.sound_speed);
+  for (const auto& term : terms) {
+    if (term->name() != term_name) continue;
+    for (auto _ : state) term->apply(f);
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(f.n_real));
+    return;
+  }
+  state.SkipWithError(("no term " + term_name).c_str());
+}
+
+BENCHMARK(BM_RhsEval)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Term, eos, std::string("eos:tait"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Term, continuity, std::string("continuity:szewc19"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Term, pressure_gradient, std::string("pressure_gradient:colagrossi"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Term, viscosity, std::string("viscosity:morris"))->Arg(100)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace arksph::bench

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/omp_wait_policy.hpp"
 #include "app/interrupt.hpp"
 #include "app/simulation.hpp"
 #include "core/errors.hpp"
@@ -123,6 +124,7 @@ int cmd_run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  arksph::prefer_passive_omp_waiting(argv);  // see app/omp_wait_policy.hpp
   try {
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
       std::fputs(kUsage, stdout);

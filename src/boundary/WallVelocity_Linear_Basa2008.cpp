@@ -26,7 +26,8 @@ void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const doub
     };
     // The fluid particle nearest to the wall in each tangential bin.
     nearest_.assign(static_cast<std::size_t>(bins), -1);
-    std::vector<double> best(static_cast<std::size_t>(bins), 2.0 * dx_);
+    std::vector<double>& best = best_;
+    best.assign(static_cast<std::size_t>(bins), 2.0 * dx_);
     for (std::size_t a = 0; a < n_real; ++a) {
       const double d = std::abs(pos[k][a] - plane);
       const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));

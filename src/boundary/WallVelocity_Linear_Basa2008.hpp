@@ -22,6 +22,7 @@ class LinearWallVelocity {
  private:
   const Scene& scene_;
   double dx_;
+  mutable std::vector<double> best_;  // per tangential bin: its wall distance (scratch, kept to avoid allocation)
   mutable std::vector<long> nearest_;  // per tangential bin: nearest real particle (-1: none)
 };
 

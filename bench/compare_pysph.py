@@ -110,7 +110,8 @@ def run_pysph(args):
     os.makedirs(os.path.join(args.out, "pysph-home"), exist_ok=True)
     with open(os.path.join(fix, "sitecustomize.py"), "w") as f:
         f.write("from mpi4py import MPI\n")  # works around a PySPH 1.0b1 MPI-init bug (PEERS.md)
-    env = dict(os.environ, OMP_NUM_THREADS=str(args.threads), PYTHONPATH=fix,
+    # Passive OpenMP waiting as arksph uses by default: fair on a shared machine.
+    env = dict(os.environ, OMP_NUM_THREADS=str(args.threads), OMP_WAIT_POLICY="PASSIVE", PYTHONPATH=fix,
                HOME=os.path.join(args.out, "pysph-home"))
     cmd = ["/usr/bin/python3", "-m", "pysph.examples.cavity", "--openmp", "--nx", "50", "--re", "100",
            "--tf", "%g" % args.tf, "-d", out]
@@ -139,6 +140,8 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     rows = [run_arksph(args, "wcsph", []),
             run_arksph(args, "wcsph_cfl05", ["--set", "time.cfl=0.5"]),
+            run_arksph(args, "wcsph_bs23_cfl075", ["--set", "time.cfl=0.75",
+                                                   "--set", "time.integrator=ARKODE_BOGACKI_SHAMPINE_4_2_3"]),
             run_arksph(args, "isph", ["--set", "method.scheme=isph", "--set", "method.ppe_pressure_level=zero_min",
                                       "--set", "method.ppe_divergence=difference", "--set", "method.ppe_solver=cg",
                                       "--set", "time.integrator=ARKSPH_FORWARD_EULER_1_1", "--set", "time.dt=0.002"])]

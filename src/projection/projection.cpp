@@ -28,6 +28,7 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
 
 void Projection::forget_warm_start() {
   pressure_.clear();
+  solution_.clear();
   solver_ = make_poisson_solver(solver_->name(), tolerance_);
   if (correction_) correction_->forget_warm_start();
 }
@@ -49,15 +50,18 @@ void Projection::project(double t, double* y) {
   // 2. Pressure Poisson equation.
   const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
   const PoissonSystem sys = exact_operator_? assemble_ppe_exact(f, div, dt) : assemble_ppe(f, div, dt);
-  if (pressure_.size() != n) pressure_.assign(n, 0.0);
+  if (solution_.size() != n) solution_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
-  const SolveReport rep = solver_->solve(sys.A, sys.b, pressure_);
+  // solution_ keeps the pinned system's own solution (P_0 = 0) as the next warm start: a start
+  // shifted by a constant would hand CG a smooth error, its slowest mode.
+  const SolveReport rep = solver_->solve(sys.A, sys.b, solution_);
   stats_.solve_seconds += since(ts);
   // The level of P is free (Neumann walls) but matters to the symmetric gradient of eq. 11 on
   // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract).
-  const double level = zero_min_level_ ? *std::min_element(pressure_.begin(), pressure_.end())
-                                       : std::accumulate(pressure_.begin(), pressure_.end(), 0.0) / static_cast<double>(n);
-  for (double& p : pressure_) p -= level;
+  const double level = zero_min_level_ ? *std::min_element(solution_.begin(), solution_.end())
+                                       : std::accumulate(solution_.begin(), solution_.end(), 0.0) / static_cast<double>(n);
+  pressure_.resize(n);
+  for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level;
   ++stats_.solves;
   stats_.iterations += rep.iterations;
   stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;

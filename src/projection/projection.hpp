@@ -52,7 +52,8 @@ class Projection {
   bool zero_min_level_;
   double t_prev_ = 0;
   std::vector<double> y_prev_;
-  std::vector<double> pressure_;
+  std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)
+  std::vector<double> solution_;  // the Poisson solver's solution (P_0 = 0): the next warm start
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   ProjectionStats stats_;
 };

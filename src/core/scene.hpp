@@ -56,6 +56,9 @@ struct Scene {
   std::string kernel = "wendland_quintic";
   double h_over_dx = 2.0;
   std::string viscosity_model = "morris";
+  double cleary_xi = 4.96333;          // Basa et al. 2008 eq. 34 (model D) calibration constant
+  std::string kernel_correction = "none";  // Basa et al. 2008 §4: "none" | "shepard" (eqs. 21-23) | "bonet_lok" (eqs. 24-26)
+  bool pressure_reduction = false;     // Basa et al. 2008 eq. 20: local average pressure subtracted in the pressure gradient
   double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
   double tait_gamma = 7.0;             // C&R eq. 7
   double background_pressure = 0.0;    // added to the Tait pressure (Morris et al. 1997); keeps p > 0 near walls

@@ -47,7 +47,10 @@ offset = ["0", "0"]            # displacement of each lattice point (x, y) at t 
 scheme = "wcsph"               # "wcsph" | "isph" | "isph-gpps"  (arksph list)
 kernel = "wendland_quintic"    # "cubic_spline" | "quartic_spline" | "wendland_quintic" | "quintic_spline"
 h_over_dx = 2.0                # smoothing length h / dx, in [0.5, 4]
-viscosity_model = "morris"     # "direct" | "two_pass" | "violeau" | "cleary" | "morris"
+viscosity_model = "morris"     # Basa models "direct" (A) | "two_pass" (B) | "violeau" (C) | "cleary" (D) | "morris" (E); or "monaghan"
+cleary_xi = 4.96333            # model D calibration constant xi (Basa eq. 34; > 0)
+kernel_correction = "none"     # "none" | "shepard" (Basa eqs. 21-23) | "bonet_lok" (Basa eqs. 24-26): corrected gradients
+pressure_reduction = false     # subtract the local average pressure in the pressure gradient (Basa eq. 20)
 sound_speed = 10.0             # WCSPH sound speed c0 (>= 0; 0: the documented default); wcsph only
 tait_gamma = 7.0               # exponent of the Tait equation of state (>= 1), Cummins & Rudman eq. 7
 background_pressure = 1.0      # constant added to the Tait pressure (>= 0; Morris et al. 1997); keeps p > 0 at the walls

@@ -229,12 +229,18 @@ void read_method(const Section& root, Scene& s) {
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
                                             "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
-                                            "correction_max_iterations", "correction_solver"});
+                                            "correction_max_iterations", "correction_solver",
+                                            "cleary_xi", "kernel_correction", "pressure_reduction"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
   s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
   m.require(s.h_over_dx >= 0.5 && s.h_over_dx <= 4, "h_over_dx", "in [0.5, 4]", s.h_over_dx);
   s.viscosity_model = m.registered("viscosity_model", "viscosity_model", s.viscosity_model);
+  s.cleary_xi = m.number("cleary_xi", s.cleary_xi);  // model D constant (Basa eq. 34)
+  m.require(s.cleary_xi > 0, "cleary_xi", "> 0", s.cleary_xi);
+  // Basa §4 kernel consistency correction of the pressure and viscous terms
+  s.kernel_correction = m.registered("kernel_correction", "kernel_correction", s.kernel_correction);
+  s.pressure_reduction = m.boolean("pressure_reduction", s.pressure_reduction);  // Basa eq. 20
   s.sound_speed = m.number("sound_speed", s.sound_speed);  // WCSPH c0; 0: default
   m.require(s.sound_speed >= 0, "sound_speed", ">= 0", s.sound_speed);
   s.tait_gamma = m.number("tait_gamma", s.tait_gamma);  // Tait exponent (C&R eq. 7)

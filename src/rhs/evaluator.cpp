@@ -17,7 +17,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
     : particles_(particles),
       kernel_(std::move(kernel)),
       terms_(std::move(terms)),
-      ghost_builder_(scene, kernel_.radius()),
+      ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
       nu_(scene.viscosity) {
   // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
   skin_ = 0.15 * kernel_.radius();
@@ -110,6 +110,12 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   f.src.resize(f.n_all);
   for (std::size_t a = 0; a < n; ++a) f.src[a] = static_cast<std::uint32_t>(a);
   for (std::size_t g = 0; g < ng; ++g) f.src[n + g] = ghosts_.source[g];
+  f.flip_x.assign(f.n_all, 1.0);
+  f.flip_y.assign(two_d ? f.n_all : 0, 1.0);
+  for (std::size_t g = 0; g < ng; ++g) {
+    f.flip_x[n + g] = ghosts_.place[g][0];
+    if (two_d) f.flip_y[n + g] = ghosts_.place[g][1];
+  }
   for (std::size_t g = 0; g < ng; ++g) {
     const std::size_t i = n + g, s = ghosts_.source[g];
     const auto& mv = ghosts_.map[g];

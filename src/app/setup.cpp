@@ -27,6 +27,9 @@ Model build_model(const Scene& scene) {
     u0max = std::max(u0max, std::sqrt(s2));
   }
   if (scene.scheme == "wcsph") model.sound_speed = resolve_sound_speed(scene, u0max);
+  // Ideal gas (Basa eq. 12): p = (gamma - 1) rho e; e(0) gives the sound speed sqrt(gamma p / rho) = c.
+  if (scene.equation_of_state == "ideal_gas")
+    model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));
   auto terms = terms_from_scene(scene, model.sound_speed);
   for (const auto& t : terms) model.terms.push_back(t->name());
   bool walls = false, periodic = false;

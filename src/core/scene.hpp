@@ -61,6 +61,8 @@ struct Scene {
   bool pressure_reduction = false;     // Basa et al. 2008 eq. 20: local average pressure subtracted in the pressure gradient
   double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
   double tait_gamma = 7.0;             // C&R eq. 7
+  std::string equation_of_state = "tait";  // "tait" (Basa eq. 13) | "ideal_gas" (Basa eq. 12 with the energy equation 14)
+  double gas_gamma = 1.4;              // ideal_gas: p = (gamma - 1) rho e; e(0) chosen so that sqrt(gamma p / rho) = c
   double background_pressure = 0.0;    // added to the Tait pressure (Morris et al. 1997); keeps p > 0 near walls
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)

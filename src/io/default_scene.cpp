@@ -51,6 +51,8 @@ viscosity_model = "morris"     # Basa models "direct" (A) | "two_pass" (B) | "vi
 cleary_xi = 4.96333            # model D calibration constant xi (Basa eq. 34; > 0)
 kernel_correction = "none"     # "none" | "shepard" (Basa eqs. 21-23) | "bonet_lok" (Basa eqs. 24-26): corrected gradients
 pressure_reduction = false     # subtract the local average pressure in the pressure gradient (Basa eq. 20)
+equation_of_state = "tait"     # "tait" (Basa eq. 13) | "ideal_gas" (Basa eq. 12, energy equation 14 in the state; wcsph only)
+gas_gamma = 1.4                # ideal_gas: p = (gamma - 1) rho e, e(0) such that the sound speed is sound_speed (> 1)
 sound_speed = 10.0             # WCSPH sound speed c0 (>= 0; 0: the documented default); wcsph only
 tait_gamma = 7.0               # exponent of the Tait equation of state (>= 1), Cummins & Rudman eq. 7
 background_pressure = 1.0      # constant added to the Tait pressure (>= 0; Morris et al. 1997); keeps p > 0 at the walls

@@ -230,7 +230,8 @@ void read_method(const Section& root, Scene& s) {
                                             "pressure_gradient", "density_correction", "ppe_solver",
                                             "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
                                             "correction_max_iterations", "correction_solver",
-                                            "cleary_xi", "kernel_correction", "pressure_reduction"});
+                                            "cleary_xi", "kernel_correction", "pressure_reduction",
+                                            "equation_of_state", "gas_gamma"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
   s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
@@ -241,6 +242,12 @@ void read_method(const Section& root, Scene& s) {
   // Basa §4 kernel consistency correction of the pressure and viscous terms
   s.kernel_correction = m.registered("kernel_correction", "kernel_correction", s.kernel_correction);
   s.pressure_reduction = m.boolean("pressure_reduction", s.pressure_reduction);  // Basa eq. 20
+  // Basa eq. 13 (Tait) or eq. 12 (ideal gas, with the energy equation 14 in the ODE state)
+  s.equation_of_state = m.registered("equation_of_state", "equation_of_state", s.equation_of_state);
+  s.gas_gamma = m.number("gas_gamma", s.gas_gamma);  // ideal-gas ratio of specific heats
+  m.require(s.gas_gamma > 1, "gas_gamma", "> 1", s.gas_gamma);
+  if (s.equation_of_state != "tait" && s.scheme != "wcsph")
+    m.fail("equation_of_state", "\"" + s.equation_of_state + "\" needs scheme \"wcsph\"");
   s.sound_speed = m.number("sound_speed", s.sound_speed);  // WCSPH c0; 0: default
   m.require(s.sound_speed >= 0, "sound_speed", ">= 0", s.sound_speed);
   s.tait_gamma = m.number("tait_gamma", s.tait_gamma);  // Tait exponent (C&R eq. 7)

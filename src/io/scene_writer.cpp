@@ -83,6 +83,8 @@ std::string scene_to_toml(const Scene& s) {
     << "cleary_xi = " << num(s.cleary_xi) << "\n"
     << "kernel_correction = " << quote(s.kernel_correction) << "\n"
     << "pressure_reduction = " << boolean(s.pressure_reduction) << "\n"
+    << "equation_of_state = " << quote(s.equation_of_state) << "\n"
+    << "gas_gamma = " << num(s.gas_gamma) << "\n"
     << "sound_speed = " << num(s.sound_speed) << "\n"
     << "tait_gamma = " << num(s.tait_gamma) << "\n"
     << "background_pressure = " << num(s.background_pressure) << "\n"

@@ -31,6 +31,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   layout_.n = particles.n;
   layout_.dim = particles.dim;
   layout_.has_density = scene.scheme == "wcsph" && scene.density_mode == "continuity";
+  layout_.has_energy = scene.scheme == "wcsph" && scene.equation_of_state == "ideal_gas";
   std::stable_sort(terms_.begin(), terms_.end(),
                    [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
   fields_.dim = particles.dim;
@@ -41,6 +42,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   fields_.dudt.assign(n, 0.0);
   fields_.dvdt.assign(n, 0.0);
   fields_.drhodt.assign(n, 0.0);
+  if (layout_.has_energy) fields_.dedt.assign(n, 0.0);
 }
 
 std::vector<std::string> RhsEvaluator::term_names() const {
@@ -56,6 +58,7 @@ void RhsEvaluator::initial_state(double* y) const {
     std::copy(particles_.init_vel[k].begin(), particles_.init_vel[k].end(), y + layout_.vel(k));
   }
   if (layout_.has_density) std::copy(particles_.rho0.begin(), particles_.rho0.begin() + n, y + layout_.rho());
+  if (layout_.has_energy) std::fill(y + layout_.energy(), y + layout_.energy() + n, particles_.init_energy);
 }
 
 void RhsEvaluator::load_state(double t, const double* y) {
@@ -85,6 +88,7 @@ void RhsEvaluator::load_state(double t, const double* y) {
   else
     f.rho.assign(particles_.rho0.begin(), particles_.rho0.end());  // replaced by summation if enabled
   f.p.assign(n, 0.0);
+  if (layout_.has_energy) f.e.assign(y + layout_.energy(), y + layout_.energy() + n);
 }
 
 void RhsEvaluator::refresh_ghosts(bool rebuild) {
@@ -176,6 +180,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
   std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
   std::fill(f.drhodt.begin(), f.drhodt.end(), 0.0);
+  std::fill(f.dedt.begin(), f.dedt.end(), 0.0);
   copy_to_ghosts(f.rho);
   copy_to_ghosts(f.p);
   Term::Stage done = Term::Stage::density;
@@ -202,6 +207,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
     std::copy(f.dudt.begin(), f.dudt.end(), ydot + layout_.vel(0));
     if (two_d) std::copy(f.dvdt.begin(), f.dvdt.end(), ydot + layout_.vel(1));
     if (layout_.has_density) std::copy(f.drhodt.begin(), f.drhodt.end(), ydot + layout_.rho());
+    if (layout_.has_energy) std::copy(f.dedt.begin(), f.dedt.end(), ydot + layout_.energy());
   }
   timing_.terms += seconds_since(t0);
 }

@@ -22,6 +22,8 @@ std::unique_ptr<Term> make_viscosity_violeau();    // Basa et al. 2008 model C (
 std::unique_ptr<Term> make_viscosity_cleary(double xi);  // Basa et al. 2008 model D (eq. 34)
 std::unique_ptr<Term> make_kernel_correction(const std::string& kind);  // "shepard" | "bonet_lok" (Basa §4)
 std::unique_ptr<Term> make_pressure_reduction();   // Basa et al. 2008 eq. 20
+std::unique_ptr<Term> make_eos_ideal_gas(double gamma);  // Basa et al. 2008 eq. 12
+std::unique_ptr<Term> make_energy_equation();      // Basa et al. 2008 eq. 14
 std::unique_ptr<Term> make_body_force(const std::vector<std::string>& expr);
 
 // Names by family for validation and `arksph list`.

@@ -81,7 +81,12 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
   // Basa et al. 2008 §4: corrected kernel gradients for the pressure and viscous terms.
   if (scene.kernel_correction != "none") terms.push_back(make_kernel_correction(scene.kernel_correction));
   if (wcsph) {
-    terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma, scene.background_pressure));
+    if (scene.equation_of_state == "ideal_gas") {
+      terms.push_back(make_eos_ideal_gas(scene.gas_gamma));
+      terms.push_back(make_energy_equation());
+    } else {
+      terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma, scene.background_pressure));
+    }
     if (scene.pressure_reduction) terms.push_back(make_pressure_reduction());  // Basa eq. 20
     terms.push_back(make_named(pressure_gradient_table(), scene.pressure_gradient, scene));
     if (scene.density_mode == "continuity") terms.push_back(make_continuity());

@@ -39,6 +39,8 @@ Model build_model(const Scene& scene) {
   }
   if (walls) model.terms.push_back(scene.free_slip_divergence ? "walls:ghost+free_slip_divergence" : "walls:ghost");
   if (walls && scene.wall_velocity == "linear" && scene.dimension == 2) model.terms.push_back("walls:linear_velocity");
+  if (walls && scene.wall_velocity == "quadratic" && scene.dimension == 2)
+    model.terms.push_back("walls:quadratic_velocity");
   if (periodic) model.terms.push_back("periodic:images");
   model.terms.push_back("kernel:" + scene.kernel);
   model.terms.push_back("integrator:erkstep:" + scene.integrator);

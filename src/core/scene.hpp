@@ -36,7 +36,7 @@ struct Scene {
   std::array<SideSpec, 4> sides{};
   double corner_alpha = 0.0;          // Szewc et al. 2012 eq. 46, range [-1, 1]
   bool free_slip_divergence = false;  // Szewc §6: free-slip images for the velocity divergence only
-  std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear"
+  std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear" | "quadratic"
 
   // [fluid]
   double spacing = 0.02;

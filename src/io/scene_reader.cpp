@@ -177,7 +177,7 @@ void read_boundary(const Section& root, Scene& s) {
   s.free_slip_divergence = b.boolean("free_slip_divergence", s.free_slip_divergence);
   // wall_velocity: tangential velocity of no-slip ghosts (Basa et al. 2008 §6.1.2): "mirror" (2w - u of
   // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall)
-  s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear"}, s.wall_velocity);
+  s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear", "quadratic"}, s.wall_velocity);
   bool any_wall = false;
   for (std::size_t i = 0; i < 2 * dim; ++i) any_wall |= s.sides[i].kind == SideKind::wall;
   if (s.free_slip_divergence && !any_wall)

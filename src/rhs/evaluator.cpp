@@ -23,6 +23,8 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
     linear_wall_ = std::make_unique<LinearWallVelocity>(scene, scene.spacing);
+  if (scene.wall_velocity == "quadratic" && scene.dimension == 2)
+    quadratic_wall_ = std::make_unique<QuadraticWallVelocity>(scene, scene.spacing);
   for (int k = 0; k < scene.dimension; ++k) {
     periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
     lo_[k] = scene.min[k];
@@ -134,6 +136,7 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
     f.m[i] = f.m[s];
   }
   if (linear_wall_) linear_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
+  if (quadratic_wall_) quadratic_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
   f.nu.assign(f.n_all, nu_);
 }
 

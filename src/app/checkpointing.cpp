@@ -53,6 +53,9 @@ Checkpointer::Checkpointer(const Scene& scene, const Model& model, const Checkpo
     return std::to_string(n) + " particles in " + std::to_string(dim) + "D " + (rho ? "with" : "without") +
            " a density block";
   };
+  if (restart_->has_energy != L.has_energy)
+    throw InputError(src + ": the checkpoint " + (restart_->has_energy ? "holds" : "lacks") +
+                     " an energy block; the scene's method.equation_of_state does not match");
   if (restart_->dimension != L.dim || restart_->n != L.n || restart_->has_density != L.has_density)
     throw InputError(src + ": the checkpoint holds " + describe(restart_->n, restart_->dimension, restart_->has_density) +
                      ", the scene with the --set overrides has " + describe(L.n, L.dim, L.has_density));
@@ -120,6 +123,7 @@ std::string Checkpointer::write(double t, ErkIntegrator& integrator, long frames
   Checkpoint c;
   c.dimension = L.dim;
   c.has_density = L.has_density;
+  c.has_energy = L.has_energy;
   c.n = L.n;
   c.time = t;
   const ErkStats st = integrator.stats();

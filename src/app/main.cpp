@@ -49,7 +49,7 @@ std::string toml_quote(const std::string& s) {
 
 int cmd_list() {
   const char* families[] = {"scheme", "kernel", "viscosity_model", "pressure_gradient", "density_mode",
-                            "density_correction", "ppe_solver", "erk_table"};
+                            "kernel_correction", "equation_of_state", "density_correction", "ppe_solver", "erk_table"};
   for (const char* fam : families) {
     std::printf("%s:\n", fam);
     for (const auto& n : arksph::registered_names(fam)) {

@@ -27,6 +27,9 @@ Model build_model(const Scene& scene) {
     u0max = std::max(u0max, std::sqrt(s2));
   }
   if (scene.scheme == "wcsph") model.sound_speed = resolve_sound_speed(scene, u0max);
+  // Ideal gas (Basa eq. 12): p = (gamma - 1) rho e; e(0) gives the sound speed sqrt(gamma p / rho) = c.
+  if (scene.equation_of_state == "ideal_gas")
+    model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));
   auto terms = terms_from_scene(scene, model.sound_speed);
   for (const auto& t : terms) model.terms.push_back(t->name());
   bool walls = false, periodic = false;
@@ -36,6 +39,8 @@ Model build_model(const Scene& scene) {
   }
   if (walls) model.terms.push_back(scene.free_slip_divergence ? "walls:ghost+free_slip_divergence" : "walls:ghost");
   if (walls && scene.wall_velocity == "linear" && scene.dimension == 2) model.terms.push_back("walls:linear_velocity");
+  if (walls && scene.wall_velocity == "quadratic" && scene.dimension == 2)
+    model.terms.push_back("walls:quadratic_velocity");
   if (periodic) model.terms.push_back("periodic:images");
   model.terms.push_back("kernel:" + scene.kernel);
   model.terms.push_back("integrator:erkstep:" + scene.integrator);

@@ -17,6 +17,8 @@ std::vector<std::string> registered_names(const std::string& family) {
   if (family == "viscosity_model") return viscosity_model_names();
   if (family == "density_mode") return {"continuity", "summation"};
   if (family == "pressure_gradient") return pressure_gradient_names();
+  if (family == "equation_of_state") return {"tait", "ideal_gas"};
+  if (family == "kernel_correction") return kernel_correction_names();
   if (family == "density_correction") return {"none", "pozorski_wawrenczuk"};
   if (family == "erk_table") return erk_table_names();
   return {};

@@ -11,14 +11,19 @@ namespace arksph {
 
 // y = [ x (N) | y (N) | u (N) | v (N) | rho (N, only with the continuity equation) ]  (2D)
 // y = [ x (N) | u (N) | rho (N) ]                                                       (1D)
+// followed by e (N), the specific internal energy, only with the ideal-gas equation of state.
 struct StateLayout {
   std::size_t n = 0;
   int dim = 2;
   bool has_density = false;
+  bool has_energy = false;
+  std::size_t energy() const { return static_cast<std::size_t>(2 * dim + (has_density ? 1 : 0)) * n; }
   std::size_t pos(int k) const { return static_cast<std::size_t>(k) * n; }
   std::size_t vel(int k) const { return static_cast<std::size_t>(dim + k) * n; }
   std::size_t rho() const { return static_cast<std::size_t>(2 * dim) * n; }
-  std::size_t size() const { return (2 * static_cast<std::size_t>(dim) + (has_density ? 1 : 0)) * n; }
+  std::size_t size() const {
+    return (2 * static_cast<std::size_t>(dim) + (has_density ? 1 : 0) + (has_energy ? 1 : 0)) * n;
+  }
 };
 
 struct ParticleSet {
@@ -30,6 +35,7 @@ struct ParticleSet {
   std::vector<std::int64_t> id;   // stable identifier
   std::vector<std::int32_t> phase;
   std::vector<double> init_pos[2], init_vel[2];
+  double init_energy = 0;         // specific internal energy at t = 0 (ideal-gas equation of state)
 };
 
 // Fills the domain with a square lattice, spacing dx, particles at min + (i + 1/2) dx; assigns

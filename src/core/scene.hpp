@@ -36,7 +36,7 @@ struct Scene {
   std::array<SideSpec, 4> sides{};
   double corner_alpha = 0.0;          // Szewc et al. 2012 eq. 46, range [-1, 1]
   bool free_slip_divergence = false;  // Szewc §6: free-slip images for the velocity divergence only
-  std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear"
+  std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear" | "quadratic"
 
   // [fluid]
   double spacing = 0.02;
@@ -56,8 +56,13 @@ struct Scene {
   std::string kernel = "wendland_quintic";
   double h_over_dx = 2.0;
   std::string viscosity_model = "morris";
+  double cleary_xi = 4.96333;          // Basa et al. 2008 eq. 34 (model D) calibration constant
+  std::string kernel_correction = "none";  // Basa et al. 2008 §4: "none" | "shepard" (eqs. 21-23) | "bonet_lok" (eqs. 24-26)
+  bool pressure_reduction = false;     // Basa et al. 2008 eq. 20: local average pressure subtracted in the pressure gradient
   double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
   double tait_gamma = 7.0;             // C&R eq. 7
+  std::string equation_of_state = "tait";  // "tait" (Basa eq. 13) | "ideal_gas" (Basa eq. 12 with the energy equation 14)
+  double gas_gamma = 1.4;              // ideal_gas: p = (gamma - 1) rho e; e(0) chosen so that sqrt(gamma p / rho) = c
   double background_pressure = 0.0;    // added to the Tait pressure (Morris et al. 1997); keeps p > 0 near walls
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)

@@ -139,6 +139,7 @@ std::vector<std::pair<const char*, std::size_t>> state_blocks(const StateLayout&
   for (int k = 0; k < L.dim; ++k) b.emplace_back(pos[k], L.pos(k));
   for (int k = 0; k < L.dim; ++k) b.emplace_back(vel[k], L.vel(k));
   if (L.has_density) b.emplace_back("rho", L.rho());
+  if (L.has_energy) b.emplace_back("e", L.energy());
   return b;
 }
 
@@ -152,6 +153,7 @@ void write_file(const std::string& path, const Checkpoint& c) {
   write_int32(file, "format_version", c.format_version);
   write_int32(file, "dimension", c.dimension);
   write_int32(file, "has_density", c.has_density ? 1 : 0);
+  if (c.has_energy) write_int32(file, "has_energy", 1);  // absent: no energy block
   write_int64(file, "particles", static_cast<long>(c.n));
   write_double(file, "time", c.time);
   write_int64(file, "steps", c.steps);
@@ -268,6 +270,7 @@ Checkpoint read_file(const std::string& path) {
   if (c.dimension != 1 && c.dimension != 2)
     throw std::runtime_error("dimension " + std::to_string(c.dimension) + " is not 1 or 2");
   c.has_density = read_int64(file, "has_density") != 0;
+  c.has_energy = has_attr(file, "has_energy") && read_int64(file, "has_energy") != 0;
   const long n = read_int64(file, "particles");
   if (n <= 0) throw std::runtime_error("particles = " + std::to_string(n));
   c.n = static_cast<std::size_t>(n);

@@ -19,6 +19,7 @@ struct Checkpoint {
   int format_version = kCheckpointFormatVersion;
   int dimension = 2;
   bool has_density = false;     // the state holds a density block (continuity equation)
+  bool has_energy = false;      // the state holds an energy block (ideal-gas equation of state)
   std::size_t n = 0;            // particles
   double time = 0;              // simulated time of the state
   long steps = 0;               // accepted steps since t = 0 (over all restarts)
@@ -41,6 +42,7 @@ struct Checkpoint {
     L.n = n;
     L.dim = dimension;
     L.has_density = has_density;
+    L.has_energy = has_energy;
     return L;
   }
 };

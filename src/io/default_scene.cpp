@@ -26,7 +26,7 @@ bottom = { kind = "wall" }
 top    = { kind = "wall", velocity = [1.0, 0.0], slip = "no_slip" }   # the moving lid
 corner_alpha = 0.0             # corner ghost weighting, Szewc et al. 2012 eq. 46, in [-1, 1]
 free_slip_divergence = true    # free-slip images for the velocity divergence only (Szewc §6; needed at the lid corners)
-wall_velocity = "mirror"       # no-slip ghosts: "mirror" (2w - u) | "linear" (near-wall shear extrapolated, Basa §6.1.2)
+wall_velocity = "mirror"       # no-slip ghosts: "mirror" (2w - u) | "linear" (near-wall shear extrapolated, Basa §6.1.2) | "quadratic" (two rows)
 
 [fluid]
 spacing = 0.03333333333333333  # initial lattice spacing dx = 1/30 (must divide each domain length)
@@ -47,7 +47,12 @@ offset = ["0", "0"]            # displacement of each lattice point (x, y) at t 
 scheme = "wcsph"               # "wcsph" | "isph" | "isph-gpps"  (arksph list)
 kernel = "wendland_quintic"    # "cubic_spline" | "quartic_spline" | "wendland_quintic" | "quintic_spline"
 h_over_dx = 2.0                # smoothing length h / dx, in [0.5, 4]
-viscosity_model = "morris"     # "direct" | "two_pass" | "violeau" | "cleary" | "morris"
+viscosity_model = "morris"     # Basa models "direct" (A) | "two_pass" (B) | "violeau" (C) | "cleary" (D) | "morris" (E); or "monaghan"
+cleary_xi = 4.96333            # model D calibration constant xi (Basa eq. 34; > 0)
+kernel_correction = "none"     # "none" | "shepard" (Basa eqs. 21-23) | "bonet_lok" (Basa eqs. 24-26): corrected gradients
+pressure_reduction = false     # subtract the local average pressure in the pressure gradient (Basa eq. 20)
+equation_of_state = "tait"     # "tait" (Basa eq. 13) | "ideal_gas" (Basa eq. 12, energy equation 14 in the state; wcsph only)
+gas_gamma = 1.4                # ideal_gas: p = (gamma - 1) rho e, e(0) such that the sound speed is sound_speed (> 1)
 sound_speed = 10.0             # WCSPH sound speed c0 (>= 0; 0: the documented default); wcsph only
 tait_gamma = 7.0               # exponent of the Tait equation of state (>= 1), Cummins & Rudman eq. 7
 background_pressure = 1.0      # constant added to the Tait pressure (>= 0; Morris et al. 1997); keeps p > 0 at the walls

@@ -177,7 +177,7 @@ void read_boundary(const Section& root, Scene& s) {
   s.free_slip_divergence = b.boolean("free_slip_divergence", s.free_slip_divergence);
   // wall_velocity: tangential velocity of no-slip ghosts (Basa et al. 2008 §6.1.2): "mirror" (2w - u of
   // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall)
-  s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear"}, s.wall_velocity);
+  s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear", "quadratic"}, s.wall_velocity);
   bool any_wall = false;
   for (std::size_t i = 0; i < 2 * dim; ++i) any_wall |= s.sides[i].kind == SideKind::wall;
   if (s.free_slip_divergence && !any_wall)
@@ -229,12 +229,25 @@ void read_method(const Section& root, Scene& s) {
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
                                             "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
-                                            "correction_max_iterations", "correction_solver"});
+                                            "correction_max_iterations", "correction_solver",
+                                            "cleary_xi", "kernel_correction", "pressure_reduction",
+                                            "equation_of_state", "gas_gamma"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
   s.h_over_dx = m.number("h_over_dx", s.h_over_dx);  // smoothing length h / dx
   m.require(s.h_over_dx >= 0.5 && s.h_over_dx <= 4, "h_over_dx", "in [0.5, 4]", s.h_over_dx);
   s.viscosity_model = m.registered("viscosity_model", "viscosity_model", s.viscosity_model);
+  s.cleary_xi = m.number("cleary_xi", s.cleary_xi);  // model D constant (Basa eq. 34)
+  m.require(s.cleary_xi > 0, "cleary_xi", "> 0", s.cleary_xi);
+  // Basa §4 kernel consistency correction of the pressure and viscous terms
+  s.kernel_correction = m.registered("kernel_correction", "kernel_correction", s.kernel_correction);
+  s.pressure_reduction = m.boolean("pressure_reduction", s.pressure_reduction);  // Basa eq. 20
+  // Basa eq. 13 (Tait) or eq. 12 (ideal gas, with the energy equation 14 in the ODE state)
+  s.equation_of_state = m.registered("equation_of_state", "equation_of_state", s.equation_of_state);
+  s.gas_gamma = m.number("gas_gamma", s.gas_gamma);  // ideal-gas ratio of specific heats
+  m.require(s.gas_gamma > 1, "gas_gamma", "> 1", s.gas_gamma);
+  if (s.equation_of_state != "tait" && s.scheme != "wcsph")
+    m.fail("equation_of_state", "\"" + s.equation_of_state + "\" needs scheme \"wcsph\"");
   s.sound_speed = m.number("sound_speed", s.sound_speed);  // WCSPH c0; 0: default
   m.require(s.sound_speed >= 0, "sound_speed", ">= 0", s.sound_speed);
   s.tait_gamma = m.number("tait_gamma", s.tait_gamma);  // Tait exponent (C&R eq. 7)

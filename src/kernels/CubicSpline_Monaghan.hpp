@@ -22,6 +22,8 @@ struct CubicSpline {
       f = df = 0.0;
     }
   }
+  // d2f/dq2 (direct second derivatives, Basa et al. 2008 eq. 28).
+  static inline double d2(double q) { return q < 1.0 ? -3.0 + 4.5 * q : (q < 2.0 ? 1.5 * (2.0 - q) : 0.0); }
 };
 
 }  // namespace arksph

@@ -30,6 +30,14 @@ struct QuarticSpline {
       df -= 40.0 * c * c * c;
     }
   }
+  // d2f/dq2 (direct second derivatives, Basa et al. 2008 eq. 28).
+  static inline double d2(double q) {
+    if (q >= 2.5) return 0.0;
+    double s = 12.0 * (2.5 - q) * (2.5 - q);
+    if (q < 1.5) s -= 60.0 * (1.5 - q) * (1.5 - q);
+    if (q < 0.5) s += 120.0 * (0.5 - q) * (0.5 - q);
+    return s;
+  }
 };
 
 }  // namespace arksph

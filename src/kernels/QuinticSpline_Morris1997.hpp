@@ -24,6 +24,15 @@ struct QuinticSpline {
     if (q < 2.0) add(-6.0, 2.0 - q);
     if (q < 1.0) add(15.0, 1.0 - q);
   }
+  // d2f/dq2 = sum 20 c s^3 (direct second derivatives, Basa et al. 2008 eq. 28).
+  static inline double d2(double q) {
+    if (q >= 3.0) return 0.0;
+    auto term = [](double c, double s) { return 20.0 * c * s * s * s; };
+    double v = term(1.0, 3.0 - q);
+    if (q < 2.0) v += term(-6.0, 2.0 - q);
+    if (q < 1.0) v += term(15.0, 1.0 - q);
+    return v;
+  }
 };
 
 }  // namespace arksph

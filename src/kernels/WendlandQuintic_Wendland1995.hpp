@@ -27,6 +27,12 @@ struct WendlandQuintic {
     f = s3 * s * (2.0 * q + 1.0);
     df_over_q = -5.0 * s3;
   }
+  // d2f/dq2 = (1-q/2)^2 (10 q - 5) (direct second derivatives, Basa et al. 2008 eq. 28).
+  static inline double d2(double q) {
+    if (q >= 2.0) return 0.0;
+    const double s = 1.0 - 0.5 * q;
+    return s * s * (10.0 * q - 5.0);
+  }
 };
 
 }  // namespace arksph

@@ -35,6 +35,18 @@ class Kernel {
     shape(r * inv_h_, fq, dfq);
     return norm_ * inv_h_ * dfq;
   }
+  // d2W/dr2 (Basa et al. 2008 eq. 28 needs it for the direct second derivatives of model A).
+  double d2Wdr2(double r) const {
+    const double q = r * inv_h_;
+    double d2 = 0.0;
+    switch (shape_) {
+      case KernelShapeId::cubic_spline: d2 = CubicSpline::d2(q); break;
+      case KernelShapeId::quartic_spline: d2 = QuarticSpline::d2(q); break;
+      case KernelShapeId::wendland_quintic: d2 = WendlandQuintic::d2(q); break;
+      case KernelShapeId::quintic_spline: d2 = QuinticSpline::d2(q); break;
+    }
+    return norm_ * inv_h_ * inv_h_ * d2;
+  }
   // Both at once: w = W(r), f = (dW/dr) / r, so that grad_a W_ab = f * r_ab (f = 0 at r = 0).
   // With q = r / h: (dW/dr) / r = norm / h^2 * f'(q) / q.
   void eval(double r, double& w, double& f_over_r) const {

@@ -1,6 +1,9 @@
 // Viscosity of Morris et al. 1997, model E of Basa et al. 2008 (eq. 35):
 //   (1/rho div tau)_a = sum_b m_b (mu_a + mu_b) / (rho_a rho_b) (r_ab . grad_a W_ab) / r_ab^2 u_ab,
 // with mu = rho nu. Since grad_a W_ab = F r_ab, (r_ab . grad_a W_ab) / r_ab^2 = F.
+// With a kernel correction (Basa §4) grad_a W_ab is replaced by the corrected gradient G_ab, so F
+// becomes (r_ab . G_ab) / r_ab^2.
+#include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -15,7 +18,13 @@ class ViscosityMorris final : public Term {
       double ax = 0.0, ay = 0.0;
       const double mu_a = f.rho[a] * f.nu[a], rho_a = f.rho[a];
       const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double, double, double F) {
+      const bool corrected = f.correction != FluidFields::Correction::none;
+      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+        if (corrected) {
+          double gx, gy;
+          corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+          F = (rx * gx + ry * gy) / r2;
+        }
         const double mu_sum = mu_a + f.rho[b] * f.nu[b];
         const double coeff = f.m[b] * mu_sum / (rho_a * f.rho[b]) * F;
         ax += coeff * (ua - f.u[b]);

@@ -17,12 +17,14 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
     : particles_(particles),
       kernel_(std::move(kernel)),
       terms_(std::move(terms)),
-      ghost_builder_(scene, kernel_.radius()),
+      ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
       nu_(scene.viscosity) {
   // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
   skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
     linear_wall_ = std::make_unique<LinearWallVelocity>(scene, scene.spacing);
+  if (scene.wall_velocity == "quadratic" && scene.dimension == 2)
+    quadratic_wall_ = std::make_unique<QuadraticWallVelocity>(scene, scene.spacing);
   for (int k = 0; k < scene.dimension; ++k) {
     periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
     lo_[k] = scene.min[k];
@@ -31,6 +33,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   layout_.n = particles.n;
   layout_.dim = particles.dim;
   layout_.has_density = scene.scheme == "wcsph" && scene.density_mode == "continuity";
+  layout_.has_energy = scene.scheme == "wcsph" && scene.equation_of_state == "ideal_gas";
   std::stable_sort(terms_.begin(), terms_.end(),
                    [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
   fields_.dim = particles.dim;
@@ -41,6 +44,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   fields_.dudt.assign(n, 0.0);
   fields_.dvdt.assign(n, 0.0);
   fields_.drhodt.assign(n, 0.0);
+  if (layout_.has_energy) fields_.dedt.assign(n, 0.0);
 }
 
 std::vector<std::string> RhsEvaluator::term_names() const {
@@ -56,6 +60,7 @@ void RhsEvaluator::initial_state(double* y) const {
     std::copy(particles_.init_vel[k].begin(), particles_.init_vel[k].end(), y + layout_.vel(k));
   }
   if (layout_.has_density) std::copy(particles_.rho0.begin(), particles_.rho0.begin() + n, y + layout_.rho());
+  if (layout_.has_energy) std::fill(y + layout_.energy(), y + layout_.energy() + n, particles_.init_energy);
 }
 
 void RhsEvaluator::load_state(double t, const double* y) {
@@ -85,6 +90,7 @@ void RhsEvaluator::load_state(double t, const double* y) {
   else
     f.rho.assign(particles_.rho0.begin(), particles_.rho0.end());  // replaced by summation if enabled
   f.p.assign(n, 0.0);
+  if (layout_.has_energy) f.e.assign(y + layout_.energy(), y + layout_.energy() + n);
 }
 
 void RhsEvaluator::refresh_ghosts(bool rebuild) {
@@ -110,6 +116,12 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   f.src.resize(f.n_all);
   for (std::size_t a = 0; a < n; ++a) f.src[a] = static_cast<std::uint32_t>(a);
   for (std::size_t g = 0; g < ng; ++g) f.src[n + g] = ghosts_.source[g];
+  f.flip_x.assign(f.n_all, 1.0);
+  f.flip_y.assign(two_d ? f.n_all : 0, 1.0);
+  for (std::size_t g = 0; g < ng; ++g) {
+    f.flip_x[n + g] = ghosts_.place[g][0];
+    if (two_d) f.flip_y[n + g] = ghosts_.place[g][1];
+  }
   for (std::size_t g = 0; g < ng; ++g) {
     const std::size_t i = n + g, s = ghosts_.source[g];
     const auto& mv = ghosts_.map[g];
@@ -124,6 +136,7 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
     f.m[i] = f.m[s];
   }
   if (linear_wall_) linear_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
+  if (quadratic_wall_) quadratic_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
   f.nu.assign(f.n_all, nu_);
 }
 
@@ -170,6 +183,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
   std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
   std::fill(f.drhodt.begin(), f.drhodt.end(), 0.0);
+  std::fill(f.dedt.begin(), f.dedt.end(), 0.0);
   copy_to_ghosts(f.rho);
   copy_to_ghosts(f.p);
   Term::Stage done = Term::Stage::density;
@@ -196,6 +210,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
     std::copy(f.dudt.begin(), f.dudt.end(), ydot + layout_.vel(0));
     if (two_d) std::copy(f.dvdt.begin(), f.dvdt.end(), ydot + layout_.vel(1));
     if (layout_.has_density) std::copy(f.drhodt.begin(), f.drhodt.end(), ydot + layout_.rho());
+    if (layout_.has_energy) std::copy(f.dedt.begin(), f.dedt.end(), ydot + layout_.energy());
   }
   timing_.terms += seconds_since(t0);
 }

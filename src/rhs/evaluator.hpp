@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "boundary/WallVelocity_Linear_Basa2008.hpp"
+#include "boundary/WallVelocity_Quadratic_Basa2008.hpp"
 #include "boundary/ghosts.hpp"
 #include "core/particles.hpp"
 #include "kernels/kernel.hpp"
@@ -56,6 +57,7 @@ class RhsEvaluator {
   GhostBuilder ghost_builder_;
   GhostSet ghosts_;
   std::unique_ptr<LinearWallVelocity> linear_wall_;  // only with boundary.wall_velocity = "linear"
+  std::unique_ptr<QuadraticWallVelocity> quadratic_wall_;  // only with boundary.wall_velocity = "quadratic"
   CellList cells_;
   CandidateList candidates_;
   std::vector<double> ref_x_, ref_y_;  // real positions at the last candidate rebuild

@@ -24,6 +24,19 @@ struct FluidFields {
   std::vector<double> rho, p, m;
   std::vector<double> nu;      // kinematic viscosity per point
   std::vector<std::uint32_t> src;  // the real particle each point stands for (itself when real)
+  std::vector<double> flip_x, flip_y;  // +1, or -1 where a point is a reflection of its source
+
+  // Kernel consistency correction (Basa et al. 2008 §4), filled by the kernel_correction term for
+  // all points (ghosts take their source's values, reflected): see rhs/KernelCorrection_Basa2008.hpp.
+  enum class Correction { none, shepard, bonet_lok };
+  Correction correction = Correction::none;
+  std::vector<double> one;             // <1> = sum_b V_b W_ab, self included (Basa eq. 21)
+  std::vector<double> grad1x, grad1y;  // <grad 1> (Basa eq. 22)
+  std::vector<double> lmat;            // Bonet-Lok L (Basa eq. 26), 4 per point, row-major
+  // Local average pressure of Basa eq. 20 (real particles; empty when pressure reduction is off).
+  std::vector<double> p_avg;
+  // Specific internal energy (ideal-gas equation of state, Basa eqs. 12, 14); empty otherwise.
+  std::vector<double> e, dedt;
 
   // Real particles only.
   std::vector<double> rho0;               // reference density of the phase

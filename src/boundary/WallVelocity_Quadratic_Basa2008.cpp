@@ -1,0 +1,64 @@
+#include "boundary/WallVelocity_Quadratic_Basa2008.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace arksph {
+
+QuadraticWallVelocity::QuadraticWallVelocity(const Scene& scene, double dx) : scene_(scene), dx_(dx) {}
+
+void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
+                                  double* v) const {
+  const double* pos[2] = {x, y};
+  double* vel[2] = {u, v};
+  for (int side = 0; side < 4; ++side) {
+    const SideSpec& s = scene_.sides[side];
+    if (s.kind != SideKind::wall || s.slip != SlipKind::no_slip) continue;
+    const int k = side / 2, t = 1 - k;  // normal and tangential axes
+    const double plane = side % 2 ? scene_.max[k] : scene_.min[k];
+    const double lo_t = scene_.min[t], len_t = scene_.max[t] - scene_.min[t];
+    const long bins = std::max(1L, std::lround(len_t / dx_));
+    const bool periodic_t = scene_.sides[2 * t].kind == SideKind::periodic;
+    auto bin_of = [&](double c) {
+      long b = static_cast<long>(std::floor((c - lo_t) / dx_));
+      if (periodic_t) b = ((b % bins) + bins) % bins;
+      return std::clamp(b, 0L, bins - 1);
+    };
+    const auto nb = static_cast<std::size_t>(bins);
+    // Nearest fluid particle in each bin, then the nearest one at least dx/2 further from the wall.
+    first_.assign(nb, -1);
+    second_.assign(nb, -1);
+    std::vector<double> d1(nb, 3.0 * dx_), d2(nb, 4.0 * dx_);
+    for (std::size_t a = 0; a < n_real; ++a) {
+      const double d = std::abs(pos[k][a] - plane);
+      const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
+      if (d < d1[b] && d > 1e-6 * dx_) d1[b] = d, first_[b] = static_cast<long>(a);
+    }
+    for (std::size_t a = 0; a < n_real; ++a) {
+      const double d = std::abs(pos[k][a] - plane);
+      const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
+      if (first_[b] >= 0 && d > d1[b] + 0.5 * dx_ && d < d2[b]) d2[b] = d, second_[b] = static_cast<long>(a);
+    }
+    const double w_t = s.velocity[t];
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (g.wall_side[i] != side) continue;
+      const std::size_t gi = n_real + i;
+      const auto b = static_cast<std::size_t>(bin_of(pos[t][gi]));
+      const long a1 = first_[b], a2 = second_[b];
+      if (a1 < 0) continue;  // no fluid near this stretch of wall: keep the mirror value
+      const double s_g = -g.wall_dist[i], e1 = d1[b];
+      const double u1 = vel[t][a1];
+      if (a2 < 0) {  // one row only: linear extrapolation
+        vel[t][gi] = w_t + s_g / e1 * (u1 - w_t);
+        continue;
+      }
+      const double e2 = d2[b], u2 = vel[t][a2];
+      const double l0 = (s_g - e1) * (s_g - e2) / (e1 * e2);
+      const double l1 = s_g * (s_g - e2) / (e1 * (e1 - e2));
+      const double l2 = s_g * (s_g - e1) / (e2 * (e2 - e1));
+      vel[t][gi] = w_t * l0 + u1 * l1 + u2 * l2;
+    }
+  }
+}
+
+}  // namespace arksph

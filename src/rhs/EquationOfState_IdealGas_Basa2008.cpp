@@ -1,0 +1,26 @@
+// Ideal-gas equation of state, Basa et al. 2008 eq. 12, p = rho R T, written with the specific
+// internal energy e = c_v T of a gas with ratio of specific heats gamma:
+//   p = (gamma - 1) rho e.
+// e is part of the ODE state (the energy equation 14, Energy_Basa2008.cpp). setup.cpp chooses
+// e(0) = c^2 / (gamma (gamma - 1)), so that the initial sound speed sqrt(gamma p / rho) is the
+// scene's c (Basa: 125 kPa at rho = 1, i.e. c = 418 m/s for gamma = 1.4).
+#include "rhs/terms.hpp"
+
+namespace arksph {
+
+class EquationOfStateIdealGas final : public Term {
+ public:
+  explicit EquationOfStateIdealGas(double gamma) : gamma_(gamma) {}
+  std::string name() const override { return "eos:ideal_gas"; }
+  Stage stage() const override { return Stage::pressure; }
+  void apply(FluidFields& f) const override {
+    for (std::size_t a = 0; a < f.n_real; ++a) f.p[a] = (gamma_ - 1.0) * f.rho[a] * f.e[a];
+  }
+
+ private:
+  double gamma_;
+};
+
+std::unique_ptr<Term> make_eos_ideal_gas(double gamma) { return std::make_unique<EquationOfStateIdealGas>(gamma); }
+
+}  // namespace arksph

@@ -1,0 +1,38 @@
+// Viscosity of Violeau & Issa 2007, model C of Basa et al. 2008 (eq. 33):
+//   (1/rho div tau)_a = sum_b m_b 8 / (rho_a + rho_b) (mu_a / rho_a + mu_b / rho_b)
+//                        (u_ab . r_ab) / (r_ab^2 + eta^2) grad_a W_ab,     eta = 0.1 h,
+// with mu / rho = nu. Radial pair forces: conserves linear and angular momentum (uncorrected).
+// With a kernel correction (Basa §4) grad_a W_ab is replaced by the corrected gradient.
+#include "kernels/kernel.hpp"
+#include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/terms.hpp"
+
+namespace arksph {
+
+class ViscosityVioleau final : public Term {
+ public:
+  std::string name() const override { return "viscosity:violeau"; }
+  Stage stage() const override { return Stage::force; }
+  void apply(FluidFields& f) const override {
+    const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < f.n_real; ++a) {
+      double ax = 0.0, ay = 0.0;
+      const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
+      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+        const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);
+        double gx, gy;
+        corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+        const double coeff = f.m[b] * 8.0 / (f.rho[a] + f.rho[b]) * (f.nu[a] + f.nu[b]) * u_dot_r / (r2 + eta2);
+        ax += coeff * gx;
+        ay += coeff * gy;
+      });
+      f.dudt[a] += ax;
+      if (f.dim == 2) f.dvdt[a] += ay;
+    }
+  }
+};
+
+std::unique_ptr<Term> make_viscosity_violeau() { return std::make_unique<ViscosityVioleau>(); }
+
+}  // namespace arksph

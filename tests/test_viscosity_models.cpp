@@ -1,0 +1,188 @@
+// The viscous models of Basa et al. 2008 (A direct, B two_pass, C violeau, D cleary, E morris) and
+// Monaghan's form on lattices against nu lap u of a known field, and momentum conservation of the
+// symmetric ones.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <sstream>
+
+#include "app/setup.hpp"
+#include "io/scene_reader.hpp"
+#include "rhs/terms.hpp"
+#include "test_support.hpp"
+
+using namespace arksph;
+
+namespace {
+
+// A channel periodic in x with no-slip (mirror) walls at y = 0 and y = 1, 20 x 20 particles, the
+// Poiseuille case's kernel (quintic spline) at h = 1.5 dx. u = (sin(pi y), 0) is odd
+// about both walls, so the mirrored ghosts continue it exactly: nu lap u = -nu pi^2 sin(pi y) holds
+// for every particle, wall rows included. Density and pressure stay uniform (p = 0), so du/dt is the
+// viscous term alone.
+const std::string kChannel = R"toml(
+[scene]
+name = "viscous_lattice"
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[boundary]
+left = { kind = "periodic" }
+right = { kind = "periodic" }
+bottom = { kind = "wall" }
+top = { kind = "wall" }
+[fluid]
+spacing = 0.05
+viscosity = 0.5
+[initial]
+velocity = ["sin(pi*y)", "0"]
+[method]
+scheme = "wcsph"
+kernel = "quintic_spline"
+h_over_dx = 1.5
+sound_speed = 10
+[time]
+end = 1
+)toml";
+
+struct LatticeError {
+  double max_rel = 0;  // max |du/dt - nu lap u| / (nu pi^2) over all particles
+  double max_v = 0;    // max |dv/dt| / (nu pi^2)
+  double wall_rows = 0, interior = 0;  // the same max, split into the two rows next to each wall and the rest
+};
+
+LatticeError channel_error(const std::vector<std::string>& sets) {
+  std::ostringstream warnings;
+  Scene scene = read_scene_text(kChannel, "test", sets, warnings);
+  Model model = build_model(scene);
+  std::vector<double> y(model.rhs->layout().size()), ydot(y.size());
+  model.rhs->initial_state(y.data());
+  model.rhs->eval(0.0, y.data(), ydot.data());
+  const auto& L = model.rhs->layout();
+  const double pi = std::numbers::pi, scale = scene.viscosity * pi * pi;
+  LatticeError e;
+  for (std::size_t a = 0; a < L.n; ++a) {
+    const double ya = y[L.pos(1) + a];
+    const double err = std::abs(ydot[L.vel(0) + a] + scale * std::sin(pi * ya)) / scale;
+    e.max_rel = std::max(e.max_rel, err);
+    e.max_v = std::max(e.max_v, std::abs(ydot[L.vel(1) + a]) / scale);
+    const bool near_wall = ya < 2 * scene.spacing || ya > 1 - 2 * scene.spacing;
+    (near_wall ? e.wall_rows : e.interior) = std::max(near_wall ? e.wall_rows : e.interior, err);
+  }
+  return e;
+}
+
+}  // namespace
+
+// Tolerances: the measured discretisation error of each model on this lattice (printed with
+// MESSAGE; morris 0.0065, violeau = monaghan = cleary(xi = 4) 0.044, two_pass 0.026, direct with
+// Shepard 0.017) with ~30 % headroom, well below the O(1) error of a wrong sign or factor. The
+// check covers the wall rows, so a ghost layer too thin for a model shows. The uncorrected direct
+// model A is not zero-order consistent on a lattice (Basa §5.1): its error (0.27, an offset
+// proportional to u_a / h^2) does not vanish with resolution; the test pins it between 0.1 and 0.35
+// and requires the Shepard form (eq. 23) to remove it.
+TEST_CASE("viscosity models: nu lap u of u = (sin(pi y), 0) in a walled channel lattice") {
+  struct Case {
+    std::string model;
+    std::vector<std::string> extra;
+    double tol;
+  };
+  const std::vector<Case> cases = {
+      {"morris", {}, 0.0085},
+      {"monaghan", {}, 0.057},
+      {"violeau", {}, 0.057},
+      {"cleary", {"method.cleary_xi=4"}, 0.057},  // xi = 4 is the exact 2D constant (see Viscosity_Cleary1998.cpp)
+      {"two_pass", {}, 0.034},
+      {"direct", {"method.kernel_correction=shepard"}, 0.022},
+      {"direct", {"method.kernel_correction=bonet_lok"}, 0.022},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> sets = {"method.viscosity_model=" + c.model};
+    sets.insert(sets.end(), c.extra.begin(), c.extra.end());
+    const LatticeError e = channel_error(sets);
+    MESSAGE(c.model << (c.extra.empty() ? "" : " " + c.extra[0]) << ": max rel error " << e.max_rel
+                    << " (wall rows " << e.wall_rows << ", interior " << e.interior << "), max |dv/dt| " << e.max_v);
+    CHECK(e.max_rel < c.tol);
+    CHECK(e.max_v < c.tol);
+  }
+  const LatticeError a = channel_error({"method.viscosity_model=direct"});
+  MESSAGE("direct, uncorrected: max rel error " << a.max_rel);
+  CHECK(a.max_rel > 0.1);
+  CHECK(a.max_rel < 0.35);
+}
+
+TEST_CASE("viscosity models: cleary scales with xi (pair weight 2 xi nu / rho, Basa eq. 34)") {
+  // Model D with xi is model C times xi / 4 for uniform mu and rho: the ratio of the accelerations
+  // of the same particle is xi / 4 to round-off (1e-12: two sums of ~28 terms).
+  auto accel = [](const std::vector<std::string>& sets) {
+    std::ostringstream w;
+    Scene scene = read_scene_text(kChannel, "test", sets, w);
+    Model model = build_model(scene);
+    std::vector<double> y(model.rhs->layout().size()), ydot(y.size());
+    model.rhs->initial_state(y.data());
+    model.rhs->eval(0.0, y.data(), ydot.data());
+    return ydot[model.rhs->layout().vel(0) + 7];
+  };
+  const double c = accel({"method.viscosity_model=violeau"});
+  const double d = accel({"method.viscosity_model=cleary"});  // default xi = 4.96333
+  CHECK(std::abs(d / c - 4.96333 / 4.0) < 1e-12);
+}
+
+TEST_CASE("viscosity models: two_pass doubles the ghost depth (Basa §5.2)") {
+  std::ostringstream w;
+  const Scene one = read_scene_text(kChannel, "test", {"method.viscosity_model=morris"}, w);
+  const Scene two = read_scene_text(kChannel, "test", {"method.viscosity_model=two_pass"}, w);
+  CHECK(ghost_depth(one, 3.0) == doctest::Approx(3.0));
+  CHECK(ghost_depth(two, 3.0) == doctest::Approx(6.0));
+}
+
+namespace {
+// As the momentum test of test_wcsph.cpp: total rate sum_a m_a du_a/dt against the scale
+// sum_a m_a |du_a/dt| on a jittered, doubly periodic lattice with random velocities and densities.
+// Opposite pair forces make the ratio round-off; 1e-13 allows for ~10^4 terms of either sign.
+double momentum_ratio(const std::vector<std::string>& sets, double* scale_out = nullptr) {
+  std::ostringstream warnings;
+  Scene scene = read_scene_text(testing::kTaylorGreenBox + "[time]\nend = 0.05\n", "test", sets, warnings);
+  Model model = build_model(scene);
+  ParticleSet ps = model.particles;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), vel(-1, 1);
+  for (std::size_t a = 0; a < ps.n; ++a) {
+    ps.init_pos[0][a] += jitter(rng);
+    ps.init_pos[1][a] += jitter(rng);
+    ps.init_vel[0][a] = vel(rng);
+    ps.init_vel[1][a] = vel(rng);
+  }
+  RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
+  std::vector<double> y(rhs.layout().size()), ydot(y.size());
+  rhs.initial_state(y.data());
+  if (rhs.layout().has_density)
+    for (std::size_t a = 0; a < ps.n; ++a) y[rhs.layout().rho() + a] *= 1.0 + 0.01 * vel(rng);
+  rhs.eval(0.0, y.data(), ydot.data());
+  double px = 0, py = 0, scale = 0;
+  for (std::size_t a = 0; a < ps.n; ++a) {
+    const double ax = ydot[rhs.layout().vel(0) + a], ay = ydot[rhs.layout().vel(1) + a];
+    px += ps.mass[a] * ax;
+    py += ps.mass[a] * ay;
+    scale += ps.mass[a] * (std::abs(ax) + std::abs(ay));
+  }
+  if (scale_out) *scale_out = scale;
+  return std::max(std::abs(px), std::abs(py)) / scale;
+}
+}  // namespace
+
+TEST_CASE("viscosity models: the symmetric models conserve linear momentum to round-off") {
+  for (const std::string m : {"two_pass", "violeau", "cleary", "morris", "monaghan"}) {
+    for (const std::string dm : {"continuity", "summation"}) {
+      double scale = 0;
+      const double ratio = momentum_ratio({"method.viscosity_model=" + m, "method.density_mode=" + dm}, &scale);
+      MESSAGE(m << " (" << dm << "): |sum m a| / sum m |a| = " << ratio);
+      CHECK(scale > 1e-3);  // the forces are not trivially zero
+      CHECK(ratio < 1e-13);
+    }
+  }
+  // Model A is not symmetric in a, b: the same measure is far from round-off (the check can fail).
+  CHECK(momentum_ratio({"method.viscosity_model=direct"}) > 1e-8);
+}

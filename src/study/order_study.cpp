@@ -145,22 +145,25 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
   std::ostringstream warnings;
   const Scene scene = read_scene_text(slurp(study.scene), study.scene, study.sets, warnings);
   std::vector<OrderFit> fits;
-  std::map<double, std::vector<double>> shared_refs;  // reference_table runs by step
+  // A common reference table runs once, at the smallest step of the whole study / divisor.
+  double dt_min_all = 1e300;
+  for (const auto& table : study.tables)
+    for (double dt : study.dt_for.count(table) ? study.dt_for.at(table) : study.dt) dt_min_all = std::min(dt_min_all, dt);
+  std::vector<double> shared_ref;
+  if (!study.reference_table.empty()) {
+    shared_ref = run_scene(scene, study.reference_table, dt_min_all / study.reference_dt_divisor, nullptr);
+    if (log)
+      std::fprintf(stderr, "order: reference %s at dt %.4g\n", study.reference_table.c_str(),
+                   dt_min_all / study.reference_dt_divisor);
+  }
   for (const auto& table : study.tables) {
     OrderFit fit;
     fit.table = table;
     fit.nominal = erk_table_order(table);
     const auto& steps = study.dt_for.count(table) ? study.dt_for.at(table) : study.dt;
     const double dt_min = *std::min_element(steps.begin(), steps.end());
-    const double ref_dt = dt_min / study.reference_dt_divisor;
-    const std::string ref_table = study.reference_table.empty() ? table : study.reference_table;
-    std::vector<double> ref;
-    if (!study.reference_table.empty() && shared_refs.count(ref_dt)) {
-      ref = shared_refs[ref_dt];
-    } else {
-      ref = run_scene(scene, ref_table, ref_dt, nullptr);
-      if (!study.reference_table.empty()) shared_refs[ref_dt] = ref;
-    }
+    const std::vector<double> ref =  // else each table is its own reference at its smallest step / divisor
+        study.reference_table.empty() ? run_scene(scene, table, dt_min / study.reference_dt_divisor, nullptr) : shared_ref;
     std::vector<double> xs, ys;
     for (double dt : steps) {
       OrderPoint p;

@@ -14,7 +14,8 @@
 //   tables = ["ARKSPH_FORWARD_EULER_1_1", "ARKODE_HEUN_EULER_2_1_2"]
 //   dt = [2e-3, 1e-3, 5e-4]                 # fixed steps, every table
 //   reference_table = ""                    # "" (default): each table is its own reference
-//   reference_dt_divisor = 64               # reference step = smallest dt / divisor
+//   reference_dt_divisor = 64               # reference step = smallest dt of the study (of the table
+//                                           # when it is its own reference) / divisor
 //   tolerance = 0.3                         # flag |observed - nominal| > tolerance
 //   output = "runs/order_study"             # --out overrides
 //

@@ -78,6 +78,19 @@ TEST_CASE("batch: the sweep is the Cartesian product, first axis slowest, with d
   CHECK(fs::path(sw.scene).filename() == "taylor_green_small.toml");
 }
 
+TEST_CASE("batch: linked keys vary together as one axis") {
+  const Sweep sw = read_sweep_text(sweep_text("[[vary]]\nkey = [\"fluid.spacing\", \"method.h_over_dx\"]\n"
+                                              "values = [[0.0625, 1.5], [0.05, 2]]\n"
+                                              "[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\", \"wendland_quintic\"]\n"),
+                                   kSweepDir + "/test.toml");
+  REQUIRE(sw.runs.size() == 4);
+  CHECK(sw.columns == std::vector<std::string>{"fluid.spacing", "method.h_over_dx", "method.kernel"});
+  CHECK(sw.runs[2].name == "2_spacing-0.05_h_over_dx-2_kernel-cubic_spline");
+  CHECK(sw.runs[2].values == std::vector<std::string>{"0.05", "2", "cubic_spline"});
+  CHECK_THROWS_AS(read_sweep_text(sweep_text("[[vary]]\nkey = [\"a\", \"b\"]\nvalues = [[1, 2], [3]]\n"), "x.toml"),
+                  InputError);
+}
+
 TEST_CASE("batch: bad sweep files are refused with one line naming the key") {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\"]\n", "sweep"},  // no [sweep]

@@ -23,7 +23,7 @@ struct BatchOptions {
 
 struct BatchRunResult {
   std::string name, dir;
-  std::vector<std::string> values;  // one per axis
+  std::vector<std::string> values;  // one per column (Sweep::columns)
   std::string status;               // ok | failed | bad_input | crashed | interrupted | missing_summary
   int exit_code = 0;                // the child's exit code (128 + signal if killed)
   bool skipped = false;             // finished earlier (resume)

@@ -32,7 +32,7 @@ void write_batch_csv(const Sweep& sw, const BatchResult& res, const std::string&
   if (!f) throw InputError(path + ": cannot be written");
   const auto names = metric_names(res);
   f << "run";
-  for (const auto& ax : sw.axes) f << "," << csv_field(ax.key);
+  for (const auto& key : sw.columns) f << "," << csv_field(key);
   f << ",status,exit_code,skipped,wall_seconds,steps,rhs_evals";
   for (const auto& n : names) f << "," << csv_field(n);
   f << "\n";
@@ -56,7 +56,7 @@ void write_batch_json(const Sweep& sw, const BatchResult& res, const std::string
   j.set("sweep", sw.source).set("scene", sw.scene);
   j.set("common_set", sw.common_sets);
   Json keys = Json::array();
-  for (const auto& ax : sw.axes) keys.push(ax.key);
+  for (const auto& key : sw.columns) keys.push(key);
   j.set("vary", keys);
   j.set("runs_total", res.runs.size()).set("runs_not_ok", res.failed).set("runs_skipped", res.skipped);
   j.set("wall_seconds", res.wall_seconds);
@@ -65,7 +65,7 @@ void write_batch_json(const Sweep& sw, const BatchResult& res, const std::string
     Json o = Json::object();
     o.set("run", r.name).set("dir", r.dir);
     Json set = Json::object();
-    for (std::size_t a = 0; a < sw.axes.size(); ++a) set.set(sw.axes[a].key, r.values[a]);
+    for (std::size_t c = 0; c < sw.columns.size(); ++c) set.set(sw.columns[c], r.values[c]);
     o.set("set", set);
     o.set("status", r.status).set("exit_code", r.exit_code).set("skipped", r.skipped);
     o.set("wall_seconds", r.wall_seconds).set("steps", r.steps).set("rhs_evals", r.rhs_evals);

@@ -43,6 +43,7 @@ std::string folder_part(const std::string& text) {
 void expand(Sweep& sw) {
   std::size_t count = 1;
   for (const auto& ax : sw.axes) count *= ax.values.size();
+  for (const auto& ax : sw.axes) sw.columns.insert(sw.columns.end(), ax.keys.begin(), ax.keys.end());
   const int width = static_cast<int>(std::to_string(count > 0 ? count - 1 : 0).size());
   for (std::size_t index = 0; index < count; ++index) {
     SweepRun run;
@@ -52,12 +53,15 @@ void expand(Sweep& sw) {
     std::size_t rest = index, stride = count;
     for (const auto& ax : sw.axes) {
       stride /= ax.values.size();
-      const std::string& v = ax.values[rest / stride];
+      const auto& point = ax.values[rest / stride];
       rest %= stride;
-      run.values.push_back(v);
-      run.sets.push_back(ax.key + "=" + v);
-      const auto dot = ax.key.rfind('.');
-      run.name += "_" + folder_part(ax.key.substr(dot == std::string::npos ? 0 : dot + 1)) + "-" + folder_part(v);
+      for (std::size_t k = 0; k < ax.keys.size(); ++k) {
+        const std::string& key = ax.keys[k];
+        run.values.push_back(point[k]);
+        run.sets.push_back(key + "=" + point[k]);
+        const auto dot = key.rfind('.');
+        run.name += "_" + folder_part(key.substr(dot == std::string::npos ? 0 : dot + 1)) + "-" + folder_part(point[k]);
+      }
     }
     sw.runs.push_back(std::move(run));
   }
@@ -118,21 +122,43 @@ Sweep read_sweep_text(const std::string& text, const std::string& source) {
       const std::string where = "vary[" + std::to_string(i) + "]";
       const toml::table& t = *arr->get(i)->as_table();
       SweepAxis ax;
+      const toml::node* vals_node = nullptr;
       for (const auto& [k, v] : t) {
         if (k.str() == "key") {
-          if (!v.is_string() || v.as_string()->get().empty()) throw bad(where + ".key", "expected a dotted scene key");
-          ax.key = v.as_string()->get();
+          if (v.is_string() && !v.as_string()->get().empty()) {
+            ax.keys.push_back(v.as_string()->get());
+          } else if (const toml::array* ks = v.as_array(); ks && !ks->empty()) {
+            for (const auto& e : *ks) {
+              if (!e.is_string() || e.as_string()->get().empty()) throw bad(where + ".key", "expected a dotted scene key or an array of them");
+              ax.keys.push_back(e.as_string()->get());
+            }
+          } else {
+            throw bad(where + ".key", "expected a dotted scene key or an array of them");
+          }
         } else if (k.str() == "values") {
-          const toml::array* vals = v.as_array();
-          if (!vals || vals->empty()) throw bad(where + ".values", "expected a non-empty array");
-          for (const auto& e : *vals) ax.values.push_back(set_text(e, source + ": " + where + ".values"));
+          vals_node = &v;
         } else {
           throw bad(where + "." + std::string(k.str()), "unknown key (expected key, values)");
         }
       }
-      if (ax.key.empty()) throw bad(where + ".key", "missing");
-      if (ax.values.empty()) throw bad(where + ".values", "missing");
-      if (!seen.insert(ax.key).second) throw bad(where + ".key", ax.key + " is varied twice");
+      if (ax.keys.empty()) throw bad(where + ".key", "missing");
+      if (!vals_node) throw bad(where + ".values", "missing");
+      const toml::array* vals = vals_node->as_array();
+      if (!vals || vals->empty()) throw bad(where + ".values", "expected a non-empty array");
+      for (const auto& e : *vals) {
+        if (ax.keys.size() == 1) {
+          ax.values.push_back({set_text(e, source + ": " + where + ".values")});
+          continue;
+        }
+        const toml::array* point = e.as_array();
+        if (!point || point->size() != ax.keys.size())
+          throw bad(where + ".values", "linked keys: each value must be an array of " + std::to_string(ax.keys.size()) + " values");
+        std::vector<std::string> texts;
+        for (const auto& x : *point) texts.push_back(set_text(x, source + ": " + where + ".values"));
+        ax.values.push_back(std::move(texts));
+      }
+      for (const auto& key : ax.keys)
+        if (!seen.insert(key).second) throw bad(where + ".key", key + " is varied twice");
       sw.axes.push_back(std::move(ax));
     }
   }

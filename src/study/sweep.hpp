@@ -11,6 +11,10 @@
 //   key = "method.kernel"
 //   values = ["cubic_spline", "wendland_quintic"]
 //
+//   [[vary]]                         # linked keys: varied together, one array of values per point
+//   key = ["fluid.spacing", "method.h_over_dx"]
+//   values = [[0.04, 1.2], [0.02, 1.6]]
+//
 // Run folders are named <index>_<last key part>-<value>_..., e.g.
 // "03_kernel-wendland_quintic_integrator-ARKODE_HEUN_EULER_2_1_2", with characters other than
 // [A-Za-z0-9._-] replaced by '_': deterministic, so a second invocation finds its runs again.
@@ -21,13 +25,13 @@
 namespace arksph {
 
 struct SweepAxis {
-  std::string key;                  // dotted scene key
-  std::vector<std::string> values;  // as --set values (TOML text; strings bare)
+  std::vector<std::string> keys;                 // dotted scene keys (more than one: linked, varied together)
+  std::vector<std::vector<std::string>> values;  // per point of the axis, one --set value per key (TOML text; strings bare)
 };
 
 struct SweepRun {
   std::string name;                    // folder name
-  std::vector<std::string> values;     // one per axis
+  std::vector<std::string> values;     // one per column (Sweep::columns)
   std::vector<std::string> sets;       // common sets, then "key=value" per axis
 };
 
@@ -38,6 +42,7 @@ struct Sweep {
   int jobs = 0;            // 0: not given
   std::vector<std::string> common_sets;
   std::vector<SweepAxis> axes;
+  std::vector<std::string> columns;  // every varied key, axis by axis
   std::vector<SweepRun> runs;  // the Cartesian product, first axis slowest
 };
 

@@ -14,9 +14,10 @@ namespace arksph {
 
 namespace {
 const char* kBatchUsage =
-    "usage: arksph batch SWEEP.toml [--jobs N] [--out DIR] [--quiet]\n"
+    "usage: arksph batch SWEEP.toml [--jobs N] [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
     "  Runs the Cartesian product of the sweep's [[vary]] lists over its base scene, N runs at a time, each\n"
     "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped.\n"
+    "  --set adds an override to every run (after the sweep's own set list).\n"
     "  Results: <out>/batch.csv and <out>/batch.json. Exit 0 if every run finished ok, 3 otherwise,\n"
     "  2 for a bad sweep file (nothing is run).\n";
 
@@ -36,6 +37,7 @@ int parse_int(const std::string& opt, const std::string& v) {
 
 int cmd_batch(int argc, char** argv) {
   std::string sweep_path;
+  std::vector<std::string> extra_sets;
   BatchOptions opt;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
@@ -47,6 +49,9 @@ int cmd_batch(int argc, char** argv) {
       const std::string v = argv[++i];
       if (a == "--out") opt.output = v;
       else opt.jobs = parse_int(a, v);
+    } else if (a == "--set") {
+      if (i + 1 >= argc) throw InputError(a + ": missing value");
+      extra_sets.push_back(argv[++i]);
     } else if (a == "--quiet" || a == "-q") {
       opt.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -58,7 +63,9 @@ int cmd_batch(int argc, char** argv) {
     }
   }
   if (sweep_path.empty()) throw InputError("batch: missing the sweep file (see arksph batch --help)");
-  const Sweep sweep = read_sweep_file(sweep_path);
+  Sweep sweep = read_sweep_file(sweep_path);
+  for (auto& run : sweep.runs) run.sets.insert(run.sets.end(), extra_sets.begin(), extra_sets.end());
+  sweep.common_sets.insert(sweep.common_sets.end(), extra_sets.begin(), extra_sets.end());
   const BatchResult res = run_batch(sweep, opt);
   return res.failed > 0 ? 3 : 0;
 }

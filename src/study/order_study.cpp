@@ -41,6 +41,8 @@ std::vector<double> run_scene(const Scene& scene, const std::string& table, doub
   o.fixed_dt = dt;
   Projection* proj = model.projection.get();
   if (proj) o.postprocess = [proj](double t, double* y) { proj->project(t, y); };
+  if (proj && scene.projection_points == "stages")
+    o.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
   ErkIntegrator integ([&](double t, const double* y, double* yd) { model.rhs->eval(t, y, yd); }, y0, 0.0, o);
   double t = 0;
   while (t < scene.end) {  // the run loop's step: remember r^n for the centring, step, project

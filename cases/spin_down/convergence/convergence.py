@@ -108,40 +108,50 @@ def main():
         for row in csv.DictReader(f):
             d = os.path.join(a.batch_dir, row["run"])
             dx, h = spacing_and_h(d)
-            runs.append((dx, h, d, row["status"]))
+            if os.path.exists(os.path.join(d, "particles.pvd")):
+                runs.append((dx, h, d, row["status"]))
     runs.sort(reverse=True)  # coarse to fine
-    if len(runs) != 3:
-        sys.exit("convergence.py: expected three runs, found %d" % len(runs))
+    if len(runs) < 2:
+        sys.exit("convergence.py: expected two or three runs, found %d" % len(runs))
     n = [round(1 / r[0]) for r in runs]
-    rows = []
+    rows = []  # (t, e1, e2 or None, q or None); a run that stopped early (e.g. interrupted) leaves gaps
     for t in a.times:
         frames = [read_frame(r[2], t) for r in runs]
-        if any(fr is None for fr in frames):
+        if frames[0] is None or frames[1] is None:
             continue
         e1 = interp_error(frames[0], frames[1], runs[1][1])
-        e2 = interp_error(frames[1], frames[2], runs[2][1])
-        ratio = math.log(runs[0][0] / runs[1][0])
-        q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)]
+        e2 = q = None
+        if len(runs) > 2 and frames[2] is not None:
+            e2 = interp_error(frames[1], frames[2], runs[2][1])
+            ratio = math.log(runs[0][0] / runs[1][0])
+            q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)]
         rows.append((t, e1, e2, q))
+    n3 = n[2] if len(n) > 2 else 0
     out_csv = os.path.join(a.batch_dir, "convergence.csv")
     with open(out_csv, "w") as f:
-        f.write("t,L1_%d_%d,L2_%d_%d,L1_%d_%d,L2_%d_%d,Q_L1,Q_L2\n" % (n[0], n[1], n[0], n[1], n[1], n[2], n[1], n[2]))
+        f.write("t,L1_%d_%d,L2_%d_%d,L1_%d_%d,L2_%d_%d,Q_L1,Q_L2\n" % (n[0], n[1], n[0], n[1], n[1], n3, n[1], n3))
         for t, e1, e2, q in rows:
-            f.write("%g,%.6e,%.6e,%.6e,%.6e,%.4f,%.4f\n" % (t, e1[0], e1[1], e2[0], e2[1], q[0], q[1]))
+            f.write("%g,%.6e,%.6e,%s,%s,%s,%s\n" % (t, e1[0], e1[1], *(("%.6e" % e2[0], "%.6e" % e2[1]) if e2 else ("", "")),
+                                                   *(("%.4f" % q[0], "%.4f" % q[1]) if q else ("", ""))))
     md = ["### %s" % (a.label or a.batch_dir), "",
-          "Lattices %d², %d², %d²; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q; C&R's values in brackets." % (
-              n[0], n[1], n[2], ", ".join("%.4g" % r[1] for r in runs)), "",
-          "| t | L1 (%d²–%d²) | L2 | L1 (%d²–%d²) | L2 | Q L1 | Q L2 |" % (n[0], n[1], n[1], n[2]),
+          "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q; C&R's values in brackets; "
+          "— where a run did not reach t." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs)), "",
+          "| t | L1 (%d²–%d²) | L2 | L1 (%d²–%d²) | L2 | Q L1 | Q L2 |" % (n[0], n[1], n[1], n3),
           "|---|---|---|---|---|---|---|"]
     paper = PAPER.get(a.paper)
     for t, e1, e2, q in rows:
-        p = paper["rows"].get(int(round(t))) if paper else None
-        def cell(v, k, scale):
-            return "%.3f" % (v * 1e3) + (" [%.3f]" % (p[k] * scale * 1e3) if p else "")
+        p = paper["rows"].get(int(round(t))) if paper and abs(t - round(t)) < 1e-9 else None
         sc1, sc2 = (paper["scale"] if paper else (1, 1))
-        md.append("| %g | %s | %s | %s | %s | %.2f%s | %.2f%s |" % (
-            t, cell(e1[0], 0, sc1), cell(e1[1], 1, sc1), cell(e2[0], 2, sc2), cell(e2[1], 3, sc2),
-            q[0], " [%.2f]" % p[4] if p else "", q[1], " [%.2f]" % p[5] if p else ""))
+
+        def cell(e, k, scale):
+            if e is None:
+                return "—" + (" [%.3f]" % (p[k] * scale * 1e3) if p else "")
+            return "%.3f" % (e[k % 2] * 1e3) + (" [%.3f]" % (p[k] * scale * 1e3) if p else "")
+
+        def rate(k):
+            return ("%.2f" % q[k] if q else "—") + (" [%.2f]" % p[4 + k] if p else "")
+        md.append("| %g | %s | %s | %s | %s | %s | %s |" % (
+            t, cell(e1, 0, sc1), cell(e1, 1, sc1), cell(e2, 2, sc2), cell(e2, 3, sc2), rate(0), rate(1)))
     text = "\n".join(md) + "\n"
     open(os.path.join(a.batch_dir, "convergence.md"), "w").write(text)
     print(text)

@@ -214,13 +214,13 @@ int cmd_order_study(int argc, char** argv) {
     std::ofstream e(err_csv), f(fit_csv);
     if (!e || !f) throw InputError(study.output + ": cannot write the study output");
     e << "table,nominal_order,dt,error,rhs_evals\n";
-    f << "table,nominal_order,observed_order,tolerance,flag\n";
+    f << "table,nominal_order,observed_order,tolerance,flag,fsal_bug_workaround\n";
     e.precision(10), f.precision(6);
     for (const auto& fit : fits) {
       for (const auto& p : fit.points)
         e << fit.table << "," << fit.nominal << "," << p.dt << "," << p.error << "," << p.rhs_evals << "\n";
       f << fit.table << "," << fit.nominal << "," << fit.observed << "," << study.tolerance << ","
-        << (fit.flagged ? "FLAG" : "ok") << "\n";
+        << (fit.flagged ? "FLAG" : "ok") << "," << (erk_table_has_fsal_bug(fit.table) ? 1 : 0) << "\n";
     }
   }
   std::printf("%-32s %8s %9s  %s\n", "table", "nominal", "observed", "flag");

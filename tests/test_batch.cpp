@@ -13,6 +13,7 @@
 
 #include "core/errors.hpp"
 #include "io/json_reader.hpp"
+#include "study/batch.hpp"
 #include "study/sweep.hpp"
 #include "test_support.hpp"
 
@@ -189,4 +190,30 @@ TEST_CASE("batch: a failing run gives a non-zero exit, a bad value is a bad swee
   CHECK(count_lines(b.err) == 1);
   CHECK(b.err.find("method.kernel") != std::string::npos);
   CHECK_FALSE(fs::exists(scratch / "bad/batch.csv"));
+}
+
+// A run killed by a signal (here a stand-in executable that sends itself SIGSEGV) is recorded as
+// "crashed" with exit code 128 + 11, and the other runs of the batch still finish.
+TEST_CASE("batch: a crashing run is recorded and does not stop the batch") {
+  testing::ScratchDir scratch("batch_crash");
+  const std::string fake = scratch / "fake_arksph.sh";
+  // Crashes for the first kernel, else delegates to the real binary.
+  std::ofstream(fake) << "#!/bin/sh\ncase \"$*\" in *kernel=cubic_spline*) kill -SEGV $$ ;; esac\nexec " << ARKSPH_BINARY
+                      << " \"$@\"\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const Sweep sw = read_sweep_text(sweep_text("set = [\"time.end=0.01\"]\n[[vary]]\nkey = \"method.kernel\"\n"
+                                              "values = [\"cubic_spline\", \"wendland_quintic\"]\n"),
+                                   kSweepDir + "/crash.toml");
+  BatchOptions opt;
+  opt.executable = fake;
+  opt.output = scratch / "out";
+  opt.jobs = 2;
+  opt.quiet = true;
+  const BatchResult res = run_batch(sw, opt);
+  REQUIRE(res.runs.size() == 2);
+  CHECK(res.runs[0].status == "crashed");
+  CHECK(res.runs[0].exit_code == 128 + 11);
+  CHECK(res.runs[1].status == "ok");
+  CHECK(res.failed == 1);
+  CHECK(testing::slurp(scratch / "out/batch.csv").find(",crashed,139,") != std::string::npos);
 }

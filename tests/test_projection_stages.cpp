@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/setup.hpp"
+#include "core/errors.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "test_support.hpp"
@@ -106,4 +107,18 @@ TEST_CASE("isph: a second projection changes u again, by an amount independent o
   MESSAGE("first projection changes u by ", first_a, ", the second by ", a, " (dt 1e-3) and ", b, " (dt 1e-4)");
   CHECK(a > 0.1 * first_a);  // measured 0.45: far from a projection (which would give 0)
   CHECK(b == doctest::Approx(a).epsilon(1e-6));
+}
+
+TEST_CASE("isph: method.projection_points takes step or stages only, and round-trips") {
+  CHECK(isph_box({}).projection_points == "step");
+  CHECK(isph_box({"method.projection_points=stages"}).projection_points == "stages");
+  try {
+    isph_box({"method.projection_points=sometimes"});
+    FAIL("accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("method.projection_points") != std::string::npos);
+  }
+  const Scene s = isph_box({"method.projection_points=stages"});
+  std::ostringstream warnings;
+  CHECK(read_scene_text(scene_to_toml(s), "round trip", {}, warnings).projection_points == "stages");
 }

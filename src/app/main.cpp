@@ -9,6 +9,7 @@
 #include "app/omp_wait_policy.hpp"
 #include "app/interrupt.hpp"
 #include "app/simulation.hpp"
+#include "app/study_commands.hpp"
 #include "core/errors.hpp"
 #include "core/names.hpp"
 #include "integrate/erk_integrator.hpp"
@@ -29,6 +30,8 @@ const char* kUsage =
     "  arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...]\n"
     "      Continues the run saved in checkpoint FILE (e.g. --set time.end=10 to go further); the scene is the\n"
     "      one stored in FILE with the --set overrides. Output continues in its directory (or --out DIR).\n"
+    "  arksph batch SWEEP.toml [--jobs N] [--out DIR]   parameter sweep in parallel child runs (batch --help)\n"
+    "  arksph study order STUDY.toml [--out DIR]        observed temporal order of ARKODE tables (study --help)\n"
     "  arksph list                 registered kernels, schemes, viscosity models, ARKODE tables, ...\n"
     "  arksph default-scene        prints the embedded default scene (a commented template of every key)\n"
     "  arksph --help | run --help  this text\n"
@@ -133,6 +136,8 @@ int main(int argc, char** argv) {
     const std::string cmd = argv[1];
     if (cmd == "run") return cmd_run(argc - 2, argv + 2);
     if (cmd == "list") return cmd_list();
+    if (cmd == "batch") return arksph::cmd_batch(argc - 2, argv + 2);
+    if (cmd == "study") return arksph::cmd_study(argc - 2, argv + 2);
     if (cmd == "default-scene") {
       std::fputs(arksph::default_scene_toml(), stdout);
       return 0;

@@ -49,6 +49,7 @@ Model build_model(const Scene& scene) {
     model.projection = std::make_unique<Projection>(scene, *model.rhs);
     model.terms.push_back("projection:ppe-" + scene.ppe_solver);
     if (scene.centre_positions) model.terms.push_back("projection:centred_positions");
+    if (scene.projection_points == "stages") model.terms.push_back("projection:stages");
     if (scene.density_correction == "pozorski_wawrenczuk") model.terms.push_back("correction:pozorski_wawrenczuk");
   }
   return model;

@@ -78,6 +78,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   if (model.projection) {
     Projection* proj = model.projection.get();
     eo.postprocess = [proj](double t, double* y) { proj->project(t, y); };
+    if (scene.projection_points == "stages") eo.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
   }
   if (checkpoints.restarting()) {  // continue from the stored state; d0 stays that of t = 0
     y0 = checkpoints.restart().state;

@@ -73,6 +73,7 @@ struct Scene {
   std::string ppe_solver = "klu";      // isph: "klu" (direct) | "cg" (incomplete-Cholesky CG, warm start)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)
+  std::string projection_points = "step";  // isph: project after each "step" (C&R) | after each "stages" too
   double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
   int correction_max_iterations = 1;   // pozorski_wawrenczuk: Poisson solves per step at most
   std::string correction_solver = "fixed_point";  // pozorski_wawrenczuk: "fixed_point" | "kinsol"

@@ -81,7 +81,7 @@ int erk_table_order(const std::string& name) {
 }
 
 ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt)
-    : f_(std::move(f)), stab_(opt.stability), post_(opt.postprocess), n_(y0.size()), t_(t0),
+    : f_(std::move(f)), stab_(opt.stability), post_(opt.postprocess), post_stage_(opt.postprocess_stage), n_(y0.size()), t_(t0),
       fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt) {
   check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
   y_ = N_VNew_Serial(static_cast<sunindextype>(n_), ctx_);
@@ -117,6 +117,14 @@ ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, doubl
     check(ERKStepSetPostprocessStepFn(mem_, [](sunrealtype, N_Vector, void*) { return 0; }),
           "ERKStepSetPostprocessStepFn");
     workaround_ = true;
+  }
+  if (post_stage_) {
+    check(ERKStepSetPostprocessStageFn(mem_,
+                                       [](sunrealtype t, N_Vector y, void* self) {
+                                         static_cast<ErkIntegrator*>(self)->post_stage_(t, N_VGetArrayPointer(y));
+                                         return 0;
+                                       }),
+          "ERKStepSetPostprocessStageFn");
   }
   check(ERKStepSetMaxNumSteps(mem_, opt.max_steps), "ERKStepSetMaxNumSteps");
   if (opt.fixed_dt > 0) {

@@ -30,6 +30,9 @@ struct ErkOptions {
   // Applied to every accepted step, y modified in place (ISPH projection). Installing it also
   // cures the FSAL bug, since ERKStep then recomputes f(y_{n+1}).
   std::function<void(double t, double* y)> postprocess;
+  // Applied to every stage z_i, i >= 2, at t_n + c_i h before f(z_i) is evaluated
+  // (ERKStepSetPostprocessStageFn): the ISPH "projection after each stage" variant.
+  std::function<void(double t, double* y)> postprocess_stage;
 };
 
 struct ErkStats {
@@ -76,6 +79,7 @@ class ErkIntegrator {
   RhsFunction f_;
   StabilityFunction stab_;
   std::function<void(double, double*)> post_;
+  std::function<void(double, double*)> post_stage_;
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;
   void* mem_ = nullptr;

@@ -65,6 +65,7 @@ ppe_pressure_level = "zero_mean"  # isph: free level of P, "zero_mean" | "zero_m
 ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG) | "auto" (KLU up to 1,000 particles, else CG); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
+projection_points = "step"     # isph: project after each "step" (C&R) | "stages": also after every ERK stage
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)
 correction_solver = "fixed_point"  # pozorski_wawrenczuk: "fixed_point" (linear solves) | "kinsol" (Newton, KLU)

@@ -228,7 +228,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
+                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "projection_points", "correction_threshold",
                                             "correction_max_iterations", "correction_solver",
                                             "cleary_xi", "kernel_correction", "pressure_reduction",
                                             "equation_of_state", "gas_gamma"});
@@ -276,6 +276,8 @@ void read_method(const Section& root, Scene& s) {
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);
   m.require(s.ppe_tolerance > 0 && s.ppe_tolerance < 1, "ppe_tolerance", "in (0, 1)", s.ppe_tolerance);
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);
+  // "step": project after each accepted step (C&R); "stages": also every ERK stage z_i, i >= 2
+  s.projection_points = m.one_of("projection_points", {"step", "stages"}, s.projection_points);
   // Pozorski-Wawrenczuk correction (Szewc §9): trigger threshold and iterations per step.
   s.correction_threshold = m.number("correction_threshold", s.correction_threshold);
   m.require(s.correction_threshold >= 0, "correction_threshold", ">= 0", s.correction_threshold);

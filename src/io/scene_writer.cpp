@@ -97,6 +97,7 @@ std::string scene_to_toml(const Scene& s) {
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"
+    << "projection_points = " << quote(s.projection_points) << "\n"
     << "correction_threshold = " << num(s.correction_threshold) << "\n"
     << "correction_max_iterations = " << s.correction_max_iterations << "\n"
     << "correction_solver = " << quote(s.correction_solver) << "\n\n";

@@ -38,11 +38,39 @@ void Projection::begin_step(double t, const double* y) {
   y_prev_.assign(y, y + rhs_.layout().size());
 }
 
+void Projection::project_stage(double t, double* y) {
+  const double dt = t - t_prev_;
+  if (dt <= 0) return;  // a stage at c_i = 0 needs no projection
+  const auto t0 = std::chrono::steady_clock::now();
+  project_velocities(dt, t, y);
+  stats_.seconds += since(t0);
+}
+
 void Projection::project(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();
   const StateLayout& L = rhs_.layout();
   const double dt = t - t_prev_;
   if (dt <= 0) return;
+  project_velocities(dt, t, y);
+  const std::size_t n = L.n;
+
+  // 4. Positions centred in time, C&R eq. 12.
+  if (centre_positions_ && y_prev_.size() == L.size()) {
+    for (int k = 0; k < L.dim; ++k) {
+      for (std::size_t a = 0; a < n; ++a) {
+        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
+        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
+      }
+    }
+  }
+  stats_.seconds += since(t0);
+
+  // 5. Density correction, Szewc eqs. 57-58 (timed separately).
+  if (correction_) correction_->apply(t, y);
+}
+
+void Projection::project_velocities(double dt, double t, double* y) {
+  const StateLayout& L = rhs_.layout();
   rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u*
   const FluidFields& f = rhs_.fields();
   const std::size_t n = L.n;
@@ -84,20 +112,6 @@ void Projection::project(double t, double* y) {
     u[a] -= dt * gx;
     if (v) v[a] -= dt * gy;
   }
-
-  // 4. Positions centred in time, C&R eq. 12.
-  if (centre_positions_ && y_prev_.size() == L.size()) {
-    for (int k = 0; k < L.dim; ++k) {
-      for (std::size_t a = 0; a < n; ++a) {
-        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
-        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
-      }
-    }
-  }
-  stats_.seconds += since(t0);
-
-  // 5. Density correction, Szewc eqs. 57-58 (timed separately).
-  if (correction_) correction_->apply(t, y);
 }
 
 }  // namespace arksph

@@ -34,6 +34,9 @@ class Projection {
   void begin_step(double t, const double* y);
   // Projects y (the end-of-step state at time t) in place.
   void project(double t, double* y);
+  // The "after each stage" variant: projects the velocities of a stage state z_i at t = t_n + c_i h
+  // with dt = c_i h (steps 1-3 only: no centring, no density correction, which act on the step).
+  void project_stage(double t, double* y);
   const std::vector<double>& pressure() const { return pressure_; }
   const ProjectionStats& stats() const { return stats_; }
   std::string solver_name() const { return solver_->name(); }
@@ -43,6 +46,8 @@ class Projection {
   void forget_warm_start();
 
  private:
+  void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
+
   RhsEvaluator& rhs_;
   std::unique_ptr<PoissonSolver> solver_;
   double tolerance_;

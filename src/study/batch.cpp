@@ -1,0 +1,196 @@
+// The batch runner (see batch.hpp): fork/exec of the arksph binary per run, a job limit, resume.
+#include "study/batch.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "app/interrupt.hpp"
+#include "core/errors.hpp"
+#include "io/json_reader.hpp"
+#include "io/scene_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace arksph {
+
+namespace {
+using clock = std::chrono::steady_clock;
+
+std::vector<std::string> child_args(const Sweep& sw, const SweepRun& run, const std::string& dir) {
+  std::vector<std::string> a = {"arksph", "run", sw.scene, "--out", dir, "--quiet"};
+  for (const auto& s : run.sets) a.insert(a.end(), {"--set", s});
+  return a;
+}
+
+std::string joined(const std::vector<std::string>& args) {
+  std::string s;
+  for (const auto& a : args) s += a + "\n";
+  return s;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Fills status, wall time, steps and metrics from the run's summary.json (if readable).
+bool read_summary(BatchRunResult& r) {
+  const fs::path p = fs::path(r.dir) / "summary.json";
+  if (!fs::exists(p)) return false;
+  try {
+    const JsonValue j = read_json_file(p.string());
+    if (const JsonValue* s = j.find("status")) r.status = s->text;
+    if (const JsonValue* w = j.find("wall_seconds")) r.wall_seconds = w->number;
+    if (const JsonValue* s = j.find("steps")) r.steps = static_cast<long>(s->number);
+    if (const JsonValue* s = j.find("rhs_evals")) r.rhs_evals = static_cast<long>(s->number);
+    r.metrics.clear();
+    if (const JsonValue* m = j.find("metrics"))
+      for (const auto& [k, v] : m->members) {
+        if (v.kind == JsonValue::Kind::number) r.metrics.emplace_back(k, v.text);
+        if (v.kind == JsonValue::Kind::null) r.metrics.emplace_back(k, "nan");  // summary.json writes NaN as null
+      }
+    return true;
+  } catch (const InputError&) {
+    return false;  // truncated by a crash: treated as missing
+  }
+}
+
+// Starts one child with stdout and stderr into DIR/run.log.
+pid_t launch(const std::string& exe, const std::vector<std::string>& args, const std::string& dir) {
+  const std::string log = (fs::path(dir) / "run.log").string();
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, STDOUT_FILENO);
+      dup2(fd, STDERR_FILENO);
+      close(fd);
+    }
+    setenv("OMP_NUM_THREADS", "1", 0);  // parallelism comes from the jobs; keep a user's setting
+    execv(exe.c_str(), argv.data());
+    std::perror("arksph batch: exec");
+    _exit(127);
+  }
+  return pid;
+}
+
+std::string status_from_exit(int code, int signal) {
+  if (signal) return "crashed";
+  switch (code) {
+    case 0: return "missing_summary";
+    case 2: return "bad_input";
+    case 3: return "failed";
+    case 130:
+    case 143: return "interrupted";
+    default: return "failed";
+  }
+}
+}  // namespace
+
+BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
+  const auto start = clock::now();
+  const std::string out = opt.output.empty() ? sw.output : opt.output;
+  const std::string exe = opt.executable.empty() ? std::string("/proc/self/exe") : opt.executable;
+  int jobs = opt.jobs > 0 ? opt.jobs : sw.jobs > 0 ? sw.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  if (jobs < 1) jobs = 1;
+
+  // Every run's scene must read: a bad value is a bad sweep (exit 2) before anything runs.
+  for (const auto& run : sw.runs) {
+    std::ostringstream warnings;
+    try {
+      read_scene_text(slurp(sw.scene), sw.scene, run.sets, warnings);
+    } catch (const InputError& e) {
+      throw InputError(sw.source + ": run " + run.name + ": " + e.what());
+    }
+  }
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw InputError(sw.source + ": sweep.output: cannot create " + out + ": " + ec.message());
+
+  BatchResult res;
+  res.runs.resize(sw.runs.size());
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < sw.runs.size(); ++i) {
+    BatchRunResult& r = res.runs[i];
+    r.name = sw.runs[i].name;
+    r.dir = (fs::path(out) / r.name).string();
+    r.values = sw.runs[i].values;
+    const std::string cmd = joined(child_args(sw, sw.runs[i], r.dir));
+    if (slurp(fs::path(r.dir) / "batch_run.txt") == cmd && read_summary(r) && r.status == "ok") {
+      r.skipped = true;
+      ++res.skipped;
+    } else {
+      todo.push_back(i);
+    }
+  }
+
+  const std::size_t total = sw.runs.size();
+  std::size_t done = res.skipped, next = 0;
+  std::map<pid_t, std::size_t> running;
+  if (!opt.quiet && res.skipped)
+    std::fprintf(stderr, "batch: %d of %zu runs already finished (skipped), %zu to run, %d at a time\n", res.skipped,
+                 total, todo.size(), jobs);
+  install_interrupt_handlers();
+  while (next < todo.size() || !running.empty()) {
+    while (next < todo.size() && static_cast<int>(running.size()) < jobs && !pending_interrupt()) {
+      const std::size_t i = todo[next++];
+      BatchRunResult& r = res.runs[i];
+      fs::create_directories(r.dir);
+      fs::remove(fs::path(r.dir) / "summary.json", ec);  // a stale summary must not pass for this run's
+      const auto args = child_args(sw, sw.runs[i], r.dir);
+      std::ofstream(fs::path(r.dir) / "batch_run.txt") << joined(args);
+      running[launch(exe, args, r.dir)] = i;
+    }
+    if (running.empty()) break;  // interrupted before launching the rest
+    int wstatus = 0;
+    const pid_t pid = waitpid(-1, &wstatus, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("waitpid failed");
+    }
+    auto it = running.find(pid);
+    if (it == running.end()) continue;
+    BatchRunResult& r = res.runs[it->second];
+    running.erase(it);
+    const int sig = WIFSIGNALED(wstatus) ? WTERMSIG(wstatus) : 0;
+    r.exit_code = sig ? 128 + sig : WEXITSTATUS(wstatus);
+    const bool have_summary = read_summary(r);  // sets status, wall time, metrics
+    if (sig || r.exit_code != 0 || !have_summary) r.status = status_from_exit(r.exit_code, sig);
+    if (r.status != "ok") ++res.failed;
+    ++done;
+    if (!opt.quiet)
+      std::fprintf(stderr, "batch: [%zu/%zu] %-50s %-9s %6.2f s  (failed %d, running %zu)\n", done, total,
+                   r.name.c_str(), r.status.c_str(), r.wall_seconds, res.failed, running.size());
+  }
+  for (std::size_t k = next; k < todo.size(); ++k) {  // never launched (interrupt)
+    res.runs[todo[k]].status = "not_run";
+    ++res.failed;
+  }
+  res.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
+  write_batch_csv(sw, res, (fs::path(out) / "batch.csv").string());
+  write_batch_json(sw, res, (fs::path(out) / "batch.json").string());
+  if (!opt.quiet)
+    std::fprintf(stderr, "batch: %zu runs (%d skipped, %d not ok) in %.1f s; results in %s/batch.csv\n", total,
+                 res.skipped, res.failed, res.wall_seconds, out.c_str());
+  return res;
+}
+
+}  // namespace arksph

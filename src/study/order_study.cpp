@@ -1,0 +1,250 @@
+// The temporal order study (see order_study.hpp).
+#include "study/order_study.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/setup.hpp"
+#include "core/errors.hpp"
+#include "integrate/erk_integrator.hpp"
+#include "io/scene_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace arksph {
+
+namespace {
+std::vector<double> positive_list(const toml::node& v, const std::string& where) {
+  const toml::array* a = v.as_array();
+  if (!a || a->empty()) throw InputError(where + ": expected a non-empty array of positive numbers");
+  std::vector<double> out;
+  for (const auto& e : *a) {
+    const auto x = e.value<double>();
+    if (!x || !(*x > 0)) throw InputError(where + ": expected a non-empty array of positive numbers");
+    out.push_back(*x);
+  }
+  return out;
+}
+
+std::vector<double> run_scene(const Scene& scene, const std::string& table, double dt, long* rhs_evals) {
+  Model model = build_model(scene);
+  std::vector<double> y0(model.rhs->layout().size());
+  model.rhs->initial_state(y0.data());
+  ErkOptions o;
+  o.table = table;
+  o.fixed_dt = dt;
+  Projection* proj = model.projection.get();
+  if (proj) o.postprocess = [proj](double t, double* y) { proj->project(t, y); };
+  if (proj && scene.projection_points == "stages")
+    o.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
+  ErkIntegrator integ([&](double t, const double* y, double* yd) { model.rhs->eval(t, y, yd); }, y0, 0.0, o);
+  double t = 0;
+  while (t < scene.end) {  // the run loop's step: remember r^n for the centring, step, project
+    if (proj) proj->begin_step(t, integ.state());
+    t = integ.step(scene.end);
+  }
+  if (rhs_evals) *rhs_evals = integ.stats().rhs_evals;
+  return {integ.state(), integ.state() + integ.size()};
+}
+
+double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+}  // namespace
+
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = static_cast<double>(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const double lx = std::log(x[k]), ly = std::log(y[k]);
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+OrderStudy read_order_study(const std::string& path, const std::vector<std::string>& extra_sets) {
+  const std::string text = slurp(path);
+  if (text.empty() && !fs::exists(path)) throw InputError(path + ": cannot read the study file");
+  toml::table root;
+  try {
+    root = toml::parse(std::string_view(text), std::string_view(path));
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) +
+                     ": syntax error");
+  }
+  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + key + ": " + why); };
+  for (const auto& [k, v] : root)
+    if (k.str() != "study" && k.str() != "dt_for") throw bad(std::string(k.str()), "unknown key (expected [study], [dt_for])");
+  const toml::table* st = root["study"].as_table();
+  if (!st) throw bad("study", "missing table [study]");
+  OrderStudy s;
+  s.source = path;
+  for (const auto& [k, v] : *st) {
+    const std::string key = "study." + std::string(k.str()), name(k.str());
+    if (name == "scene" || name == "output" || name == "reference_table") {
+      if (!v.is_string()) throw bad(key, "expected a string");
+      (name == "scene" ? s.scene : name == "output" ? s.output : s.reference_table) = v.as_string()->get();
+    } else if (name == "set" || name == "tables") {
+      const toml::array* a = v.as_array();
+      if (!a) throw bad(key, "expected an array of strings");
+      for (const auto& e : *a) {
+        if (!e.is_string()) throw bad(key, "expected an array of strings");
+        (name == "set" ? s.sets : s.tables).push_back(e.as_string()->get());
+      }
+    } else if (name == "dt") {
+      s.dt = positive_list(v, path + ": " + key);
+    } else if (name == "reference_dt_divisor" || name == "tolerance") {
+      const auto x = v.value<double>();
+      if (!x || !(*x > 0) || (name == "reference_dt_divisor" && *x < 2)) throw bad(key, "expected a positive number (divisor >= 2)");
+      (name == "tolerance" ? s.tolerance : s.reference_dt_divisor) = *x;
+    } else {
+      throw bad(key, "unknown key");
+    }
+  }
+  if (s.scene.empty()) throw bad("study.scene", "missing (the scene file)");
+  if (fs::path(s.scene).is_relative()) s.scene = (fs::path(path).parent_path() / s.scene).lexically_normal().string();
+  if (!fs::is_regular_file(s.scene)) throw bad("study.scene", s.scene + ": no such file");
+  if (s.tables.empty()) throw bad("study.tables", "missing (a list of ARKODE table names)");
+  const auto known = erk_table_names();
+  const auto check_table = [&](const std::string& key, const std::string& t) {
+    if (std::find(known.begin(), known.end(), t) == known.end()) throw bad(key, "'" + t + "' is not an ERK table (see arksph list)");
+  };
+  for (const auto& t : s.tables) check_table("study.tables", t);
+  if (!s.reference_table.empty()) check_table("study.reference_table", s.reference_table);
+  if (const toml::table* per = root["dt_for"].as_table())
+    for (const auto& [k, v] : *per) {
+      const std::string t(k.str());
+      if (std::find(s.tables.begin(), s.tables.end(), t) == s.tables.end()) throw bad("dt_for." + t, "not in study.tables");
+      s.dt_for[t] = positive_list(v, path + ": dt_for." + t);
+    }
+  for (const auto& t : s.tables) {
+    const auto& list = s.dt_for.count(t) ? s.dt_for.at(t) : s.dt;
+    if (list.size() < 2) throw bad(s.dt_for.count(t) ? "dt_for." + t : "study.dt", "at least two step sizes are needed for a slope");
+  }
+  s.sets.insert(s.sets.end(), extra_sets.begin(), extra_sets.end());
+  if (s.output.empty()) s.output = "runs/" + fs::path(path).stem().string();
+  std::ostringstream warnings;
+  read_scene_text(slurp(s.scene), s.scene, s.sets, warnings);  // bad scene or set: exit 2 before any run
+  return s;
+}
+
+std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
+  std::ostringstream warnings;
+  const Scene scene = read_scene_text(slurp(study.scene), study.scene, study.sets, warnings);
+  std::vector<OrderFit> fits;
+  // A common reference table runs once, at the smallest step of the whole study / divisor.
+  double dt_min_all = 1e300;
+  for (const auto& table : study.tables)
+    for (double dt : study.dt_for.count(table) ? study.dt_for.at(table) : study.dt) dt_min_all = std::min(dt_min_all, dt);
+  std::vector<double> shared_ref;
+  if (!study.reference_table.empty()) {
+    shared_ref = run_scene(scene, study.reference_table, dt_min_all / study.reference_dt_divisor, nullptr);
+    if (log)
+      std::fprintf(stderr, "order: reference %s at dt %.4g\n", study.reference_table.c_str(),
+                   dt_min_all / study.reference_dt_divisor);
+  }
+  for (const auto& table : study.tables) {
+    OrderFit fit;
+    fit.table = table;
+    fit.nominal = erk_table_order(table);
+    const auto& steps = study.dt_for.count(table) ? study.dt_for.at(table) : study.dt;
+    const double dt_min = *std::min_element(steps.begin(), steps.end());
+    const std::vector<double> ref =  // else each table is its own reference at its smallest step / divisor
+        study.reference_table.empty() ? run_scene(scene, table, dt_min / study.reference_dt_divisor, nullptr) : shared_ref;
+    std::vector<double> xs, ys;
+    for (double dt : steps) {
+      OrderPoint p;
+      p.dt = dt;
+      p.error = max_diff(run_scene(scene, table, dt, &p.rhs_evals), ref);
+      if (log) std::fprintf(stderr, "order: %-32s dt %-10.4g error %.4e\n", table.c_str(), dt, p.error);
+      fit.points.push_back(p);
+      xs.push_back(dt), ys.push_back(std::max(p.error, 1e-300));
+    }
+    fit.observed = loglog_slope(xs, ys);
+    fit.flagged = !(std::abs(fit.observed - fit.nominal) <= study.tolerance);
+    if (log)
+      std::fprintf(stderr, "order: %-32s nominal %d observed %.3f%s\n", table.c_str(), fit.nominal, fit.observed,
+                   fit.flagged ? "  FLAG" : "");
+    fits.push_back(std::move(fit));
+  }
+  return fits;
+}
+
+int cmd_order_study(int argc, char** argv) {
+  std::string path, out;
+  std::vector<std::string> sets;
+  bool quiet = false;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if ((a == "--set" || a == "--out") && i + 1 < argc) {
+      (a == "--set" ? sets.emplace_back() : out) = argv[++i];
+    } else if (a == "--quiet" || a == "-q") {
+      quiet = true;
+    } else if (!a.empty() && a[0] == '-') {
+      throw InputError(a + ": unknown option or missing value (see arksph study --help)");
+    } else if (path.empty()) {
+      path = a;
+    } else {
+      throw InputError(a + ": more than one study file given");
+    }
+  }
+  if (path.empty()) throw InputError("study order: missing the study file (see arksph study --help)");
+  OrderStudy study = read_order_study(path, sets);
+  if (!out.empty()) study.output = out;
+  const auto fits = run_order_study(study, !quiet);
+  fs::create_directories(study.output);
+  const std::string err_csv = (fs::path(study.output) / "order_errors.csv").string();
+  const std::string fit_csv = (fs::path(study.output) / "order_fit.csv").string();
+  {
+    std::ofstream e(err_csv), f(fit_csv);
+    if (!e || !f) throw InputError(study.output + ": cannot write the study output");
+    e << "table,nominal_order,dt,error,rhs_evals\n";
+    f << "table,nominal_order,observed_order,tolerance,flag,fsal_bug_workaround\n";
+    e.precision(10), f.precision(6);
+    for (const auto& fit : fits) {
+      for (const auto& p : fit.points)
+        e << fit.table << "," << fit.nominal << "," << p.dt << "," << p.error << "," << p.rhs_evals << "\n";
+      f << fit.table << "," << fit.nominal << "," << fit.observed << "," << study.tolerance << ","
+        << (fit.flagged ? "FLAG" : "ok") << "," << (erk_table_has_fsal_bug(fit.table) ? 1 : 0) << "\n";
+    }
+  }
+  std::printf("%-32s %8s %9s  %s\n", "table", "nominal", "observed", "flag");
+  int flagged = 0;
+  for (const auto& fit : fits) {
+    std::printf("%-32s %8d %9.3f  %s\n", fit.table.c_str(), fit.nominal, fit.observed, fit.flagged ? "FLAG" : "ok");
+    flagged += fit.flagged;
+  }
+  std::printf("errors: %s\nfit: %s\n", err_csv.c_str(), fit_csv.c_str());
+  // The plot: scripts/plot_order.py next to the binary's source, if python3 and matplotlib are present.
+  const char* plot = std::getenv("ARKSPH_PLOT_ORDER");
+  const std::string script = plot ? plot : std::string(ARKSPH_SOURCE_DIR_STR) + "/scripts/plot_order.py";
+  const std::string png = (fs::path(study.output) / "order.png").string();
+  if (fs::exists(script))
+    for (const char* python : {"/usr/bin/python3", "python3"}) {  // the system python has Debian's matplotlib
+      const std::string cmd = std::string(python) + " '" + script + "' '" + err_csv + "' '" + fit_csv + "' '" + png +
+                              "' >/dev/null 2>&1";
+      if (std::system(cmd.c_str()) == 0 && fs::exists(png)) {
+        std::printf("plot: %s\n", png.c_str());
+        break;
+      }
+    }
+  std::fflush(stdout);
+  return flagged ? 4 : 0;
+}
+
+}  // namespace arksph

@@ -1,0 +1,219 @@
+// `arksph batch`: the sweep file reader (Cartesian product, run names, bad files), the JSON reader
+// that reads summary.json back, and the real binary on the CI sweep of cases/sweeps (12 runs, a
+// resumed second invocation, a failing run).
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/errors.hpp"
+#include "io/json_reader.hpp"
+#include "study/batch.hpp"
+#include "study/sweep.hpp"
+#include "test_support.hpp"
+
+using namespace arksph;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kSweepDir = std::string(ARKSPH_SOURCE_DIR) + "/cases/sweeps";
+
+struct Outcome {
+  int code = -1;
+  std::string err;
+};
+
+Outcome run_binary(const std::string& args, const testing::ScratchDir& scratch) {
+  static int calls = 0;
+  const std::string err = scratch / ("stderr_" + std::to_string(calls++) + ".txt");
+  const int status = std::system((std::string(ARKSPH_BINARY) + " " + args + " >/dev/null 2>" + err).c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, testing::slurp(err)};
+}
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(testing::slurp(path));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> row;
+    std::istringstream ls(line);
+    for (std::string cell; std::getline(ls, cell, ',');) row.push_back(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return static_cast<int>(i);
+  FAIL("no column " << name);
+  return -1;
+}
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+std::string sweep_text(const std::string& body) {
+  return "[sweep]\nscene = \"taylor_green_small.toml\"\n" + body;
+}
+}  // namespace
+
+TEST_CASE("batch: the sweep is the Cartesian product, first axis slowest, with deterministic names") {
+  const Sweep sw = read_sweep_text(sweep_text("set = [\"time.end=0.01\"]\n"
+                                              "[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\", \"wendland_quintic\"]\n"
+                                              "[[vary]]\nkey = \"fluid.spacing\"\nvalues = [0.0625, 0.05, 0.1]\n"),
+                                   kSweepDir + "/test.toml");
+  REQUIRE(sw.runs.size() == 6);
+  CHECK(sw.runs[0].name == "0_kernel-cubic_spline_spacing-0.0625");
+  CHECK(sw.runs[1].name == "1_kernel-cubic_spline_spacing-0.05");
+  CHECK(sw.runs[3].name == "3_kernel-wendland_quintic_spacing-0.0625");
+  CHECK(sw.runs[5].sets == std::vector<std::string>{"time.end=0.01", "method.kernel=wendland_quintic", "fluid.spacing=0.1"});
+  CHECK(sw.output == "runs/test");
+  CHECK(fs::path(sw.scene).filename() == "taylor_green_small.toml");
+}
+
+TEST_CASE("batch: linked keys vary together as one axis") {
+  const Sweep sw = read_sweep_text(sweep_text("[[vary]]\nkey = [\"fluid.spacing\", \"method.h_over_dx\"]\n"
+                                              "values = [[0.0625, 1.5], [0.05, 2]]\n"
+                                              "[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\", \"wendland_quintic\"]\n"),
+                                   kSweepDir + "/test.toml");
+  REQUIRE(sw.runs.size() == 4);
+  CHECK(sw.columns == std::vector<std::string>{"fluid.spacing", "method.h_over_dx", "method.kernel"});
+  CHECK(sw.runs[2].name == "2_spacing-0.05_h_over_dx-2_kernel-cubic_spline");
+  CHECK(sw.runs[2].values == std::vector<std::string>{"0.05", "2", "cubic_spline"});
+  CHECK_THROWS_AS(read_sweep_text(sweep_text("[[vary]]\nkey = [\"a\", \"b\"]\nvalues = [[1, 2], [3]]\n"), "x.toml"),
+                  InputError);
+}
+
+TEST_CASE("batch: bad sweep files are refused with one line naming the key") {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\"]\n", "sweep"},  // no [sweep]
+      {sweep_text("jobs = 0\n[[vary]]\nkey = \"a\"\nvalues = [1]\n"), "sweep.jobs"},
+      {sweep_text("colour = 1\n[[vary]]\nkey = \"a\"\nvalues = [1]\n"), "sweep.colour"},
+      {sweep_text(""), "vary"},
+      {sweep_text("[[vary]]\nkey = \"a\"\nvalues = []\n"), "vary[0].values"},
+      {sweep_text("[[vary]]\nkey = \"a\"\nvalues = [1]\n[[vary]]\nkey = \"a\"\nvalues = [2]\n"), "vary[1].key"},
+      {"[sweep]\nscene = \"nonexistent.toml\"\n[[vary]]\nkey = \"a\"\nvalues = [1]\n", "sweep.scene"},
+      {"[sweep\n", ":1:"},
+  };
+  for (const auto& [text, key] : cases) {
+    CAPTURE(text);
+    try {
+      read_sweep_text(text, kSweepDir + "/bad.toml");
+      FAIL("accepted");
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      CHECK(msg.find(key) != std::string::npos);
+      CHECK(msg.find('\n') == std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("batch: the JSON reader reads back what summary.json holds") {
+  const JsonValue j = parse_json(R"({"status": "ok", "steps": 12, "wall_seconds": 1.5e-1,
+      "metrics": {"cv": 0.25, "bad": null}, "terms": ["a\"b", "c\\d"], "flag": true})", "inline");
+  CHECK(j.find("status")->text == "ok");
+  CHECK(j.find("steps")->number == 12);
+  CHECK(j.find("wall_seconds")->number == 0.15);
+  REQUIRE(j.find("metrics")->members.size() == 2);
+  CHECK(j.find("metrics")->members[0].first == "cv");
+  CHECK(j.find("metrics")->find("bad")->kind == JsonValue::Kind::null);
+  CHECK(j.find("terms")->items[0].text == "a\"b");
+  CHECK(j.find("terms")->items[1].text == "c\\d");
+  CHECK(j.find("flag")->boolean);
+  CHECK_THROWS_AS(parse_json("{\"a\": 1", "inline"), InputError);
+  CHECK_THROWS_AS(parse_json("{\"a\": 1} x", "inline"), InputError);
+}
+
+// The CI sweep: 12 runs, each must finish ok (status "ok" in its summary.json, exit 0); the
+// combined CSV has one row per run with the varied values; a second invocation runs nothing.
+TEST_CASE("batch: the CI sweep runs 12 runs ok, and a second invocation skips them all") {
+  testing::ScratchDir scratch("batch_ci");
+  const std::string out = scratch / "ci";
+  const Outcome first = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
+  CHECK(first.code == 0);
+  const auto rows = read_csv(out + "/batch.csv");
+  REQUIRE(rows.size() == 13);  // header + 12 runs
+  const int status = column(rows[0], "status"), skipped = column(rows[0], "skipped"),
+            kernel = column(rows[0], "method.kernel"), ke = column(rows[0], "kinetic_energy");
+  int wendland = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    CHECK(rows[r][status] == "ok");
+    CHECK(rows[r][skipped] == "0");
+    CHECK(std::stod(rows[r][ke]) > 0);  // the metrics of summary.json made it into the table
+    wendland += rows[r][kernel] == "wendland_quintic";
+    CHECK(fs::exists(out + "/" + rows[r][0] + "/summary.json"));
+  }
+  CHECK(wendland == 6);
+  CHECK(count_lines(first.err) >= 12);  // a progress line per run
+  const JsonValue j = read_json_file(out + "/batch.json");
+  CHECK(j.find("runs")->items.size() == 12);
+  CHECK(j.find("runs_not_ok")->number == 0);
+
+  const Outcome second = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
+  CHECK(second.code == 0);
+  const auto again = read_csv(out + "/batch.csv");
+  REQUIRE(again.size() == 13);
+  for (std::size_t r = 1; r < again.size(); ++r) {
+    CHECK(again[r][skipped] == "1");
+    CHECK(again[r][status] == "ok");
+  }
+}
+
+// A run that fails (time.max_steps = 1 stops it with exit 3) must not stop the others, and the
+// batch exits non-zero. A value the scene reader refuses makes the sweep bad: exit 2, nothing runs.
+TEST_CASE("batch: a failing run gives a non-zero exit, a bad value is a bad sweep (exit 2)") {
+  testing::ScratchDir scratch("batch_fail");
+  const std::string scene = kSweepDir + "/taylor_green_small.toml";
+  std::ofstream(scratch / "fail.toml") << "[sweep]\nscene = \"" << scene
+                                       << "\"\nset = [\"time.end=0.02\"]\n[[vary]]\nkey = \"time.max_steps\"\nvalues = [1, 100000]\n";
+  const Outcome o = run_binary("batch " + (scratch / "fail.toml") + " --out " + (scratch / "out"), scratch);
+  CHECK(o.code == 3);
+  const auto rows = read_csv(scratch / "out/batch.csv");
+  REQUIRE(rows.size() == 3);
+  const int status = column(rows[0], "status"), code = column(rows[0], "exit_code");
+  CHECK(rows[1][status] == "failed");
+  CHECK(rows[1][code] == "3");
+  CHECK(rows[2][status] == "ok");
+
+  std::ofstream(scratch / "bad.toml") << "[sweep]\nscene = \"" << scene
+                                      << "\"\n[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\", \"no_such_kernel\"]\n";
+  const Outcome b = run_binary("batch " + (scratch / "bad.toml") + " --out " + (scratch / "bad"), scratch);
+  CHECK(b.code == 2);
+  CHECK(count_lines(b.err) == 1);
+  CHECK(b.err.find("method.kernel") != std::string::npos);
+  CHECK_FALSE(fs::exists(scratch / "bad/batch.csv"));
+}
+
+// A run killed by a signal (here a stand-in executable that sends itself SIGSEGV) is recorded as
+// "crashed" with exit code 128 + 11, and the other runs of the batch still finish.
+TEST_CASE("batch: a crashing run is recorded and does not stop the batch") {
+  testing::ScratchDir scratch("batch_crash");
+  const std::string fake = scratch / "fake_arksph.sh";
+  // Crashes for the first kernel, else delegates to the real binary.
+  std::ofstream(fake) << "#!/bin/sh\ncase \"$*\" in *kernel=cubic_spline*) kill -SEGV $$ ;; esac\nexec " << ARKSPH_BINARY
+                      << " \"$@\"\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const Sweep sw = read_sweep_text(sweep_text("set = [\"time.end=0.01\"]\n[[vary]]\nkey = \"method.kernel\"\n"
+                                              "values = [\"cubic_spline\", \"wendland_quintic\"]\n"),
+                                   kSweepDir + "/crash.toml");
+  BatchOptions opt;
+  opt.executable = fake;
+  opt.output = scratch / "out";
+  opt.jobs = 2;
+  opt.quiet = true;
+  const BatchResult res = run_batch(sw, opt);
+  REQUIRE(res.runs.size() == 2);
+  CHECK(res.runs[0].status == "crashed");
+  CHECK(res.runs[0].exit_code == 128 + 11);
+  CHECK(res.runs[1].status == "ok");
+  CHECK(res.failed == 1);
+  CHECK(testing::slurp(scratch / "out/batch.csv").find(",crashed,139,") != std::string::npos);
+}

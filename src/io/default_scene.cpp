@@ -59,6 +59,7 @@ ppe_divergence = "cummins_rudman"  # isph: PPE source, "cummins_rudman" (C&R eq.
 ppe_pressure_level = "zero_mean"  # isph: free level of P, "zero_mean" | "zero_min" (P >= 0, so eq. 11 never attracts)
 ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
+gpps_spacing = 0              # isph-gpps: cell size of the auxiliary Poisson grid (Szewc §4.2); 0: fluid.spacing; must divide the box
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)

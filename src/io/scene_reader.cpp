@@ -228,7 +228,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "correction_threshold",
+                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "gpps_spacing", "centre_positions", "correction_threshold",
                                             "correction_max_iterations", "correction_solver"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
@@ -262,6 +262,11 @@ void read_method(const Section& root, Scene& s) {
     m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);
   m.require(s.ppe_tolerance > 0 && s.ppe_tolerance < 1, "ppe_tolerance", "in (0, 1)", s.ppe_tolerance);
+  // isph-gpps: cell size of the auxiliary Poisson grid (Szewc §4.2); 0 takes fluid.spacing
+  s.gpps_spacing = m.number("gpps_spacing", s.gpps_spacing);
+  m.require(s.gpps_spacing >= 0, "gpps_spacing", ">= 0", s.gpps_spacing);
+  if (s.gpps_spacing != 0 && s.scheme != "isph-gpps")
+    m.reporter().warn(m.key("gpps_spacing"), "unused by scheme " + s.scheme);
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);
   // Pozorski-Wawrenczuk correction (Szewc §9): trigger threshold and iterations per step.
   s.correction_threshold = m.number("correction_threshold", s.correction_threshold);

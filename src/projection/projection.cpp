@@ -23,6 +23,7 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       exact_operator_(scene.ppe_operator == "exact"),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min") {
+  if (scene.scheme == "isph-gpps") grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
 }
 
@@ -48,6 +49,30 @@ void Projection::project(double t, double* y) {
 
   // 2. Pressure Poisson equation.
   const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  if (grid_) {
+    project_on_grid(f, div, dt, y);
+  } else {
+    project_on_particles(f, div, dt, y);
+  }
+
+  // 4. Positions centred in time, C&R eq. 12.
+  if (centre_positions_ && y_prev_.size() == L.size()) {
+    for (int k = 0; k < L.dim; ++k) {
+      for (std::size_t a = 0; a < n; ++a) {
+        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
+        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
+      }
+    }
+  }
+  stats_.seconds += since(t0);
+
+  // 5. Density correction, Szewc eqs. 57-58 (timed separately).
+  if (correction_) correction_->apply(t, y);
+}
+
+void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
   const PoissonSystem sys = exact_operator_? assemble_ppe_exact(f, div, dt) : assemble_ppe(f, div, dt);
   if (pressure_.size() != n) pressure_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
@@ -80,20 +105,31 @@ void Projection::project(double t, double* y) {
     u[a] -= dt * gx;
     if (v) v[a] -= dt * gy;
   }
+}
 
-  // 4. Positions centred in time, C&R eq. 12.
-  if (centre_positions_ && y_prev_.size() == L.size()) {
-    for (int k = 0; k < L.dim; ++k) {
-      for (std::size_t a = 0; a < n; ++a) {
-        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
-        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
-      }
-    }
+void Projection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
+  const auto ts = std::chrono::steady_clock::now();
+  GridCorrection c = grid_->solve(f, div, dt);
+  stats_.solve_seconds += since(ts);
+  ++stats_.solves;
+  stats_.iterations += 1;
+  stats_.symbolic_analyses += c.refactorised ? 1 : 0;
+  stats_.last_residual = c.residual;
+  stats_.max_residual = std::max(stats_.max_residual, c.residual);
+  pressure_ = std::move(c.pressure);
+  if (zero_min_level_) {
+    const double level = *std::min_element(pressure_.begin(), pressure_.end());
+    for (double& p : pressure_) p -= level;
   }
-  stats_.seconds += since(t0);
-
-  // 5. Density correction, Szewc eqs. 57-58 (timed separately).
-  if (correction_) correction_->apply(t, y);
+  // Velocity correction, Szewc eq. 30, with (1/rho) grad p from the grid.
+  double* u = y + L.vel(0);
+  for (std::size_t a = 0; a < n; ++a) u[a] -= dt * c.ax[a];
+  if (L.dim == 2) {
+    double* v = y + L.vel(1);
+    for (std::size_t a = 0; a < n; ++a) v[a] -= dt * c.ay[a];
+  }
 }
 
 }  // namespace arksph

@@ -7,6 +7,8 @@
 //   4. optionally, positions centred in time: r = r_n + dt (u + u_n)/2 (eq. 12).
 // With ARKSPH_FORWARD_EULER_1_1 this is C&R's scheme (eqs. 8-12), except that ARKODE evaluates the
 // viscous term at r_n where eq. 9 reads chi^n(r*): a difference of O(dt^2) per step.
+// Scheme isph-gpps replaces steps 2-3 by the grid-projected Poisson solver of Szewc et al. 2012 §4.2
+// (ProjectionGrid_Szewc2012.hpp): same source, Poisson equation on a regular grid, u = u* - dt a_grid.
 #pragma once
 #include <memory>
 #include <string>
@@ -14,6 +16,7 @@
 
 #include "core/scene.hpp"
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
 #include "rhs/evaluator.hpp"
 
@@ -24,7 +27,7 @@ struct ProjectionStats {
   double seconds = 0;           // assembly + solve + correction
   double solve_seconds = 0;     // the linear solve alone
   double last_residual = 0, max_residual = 0;
-  long iterations = 0, symbolic_analyses = 0;
+  long iterations = 0, symbolic_analyses = 0;  // isph-gpps: symbolic_analyses counts grid factorisations
 };
 
 class Projection {
@@ -36,13 +39,16 @@ class Projection {
   void project(double t, double* y);
   const std::vector<double>& pressure() const { return pressure_; }
   const ProjectionStats& stats() const { return stats_; }
-  std::string solver_name() const { return solver_->name(); }
+  std::string solver_name() const { return grid_ ? "grid-klu" : solver_->name(); }
   const DensityCorrection* correction() const { return correction_.get(); }
   // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
   // factorisation), so that a run restarted from a checkpoint continues bit for bit.
   void forget_warm_start();
 
  private:
+  void project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
+  void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
+
   RhsEvaluator& rhs_;
   std::unique_ptr<PoissonSolver> solver_;
   double tolerance_;
@@ -53,6 +59,7 @@ class Projection {
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   std::vector<double> pressure_;
+  std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   ProjectionStats stats_;
 };

@@ -89,6 +89,7 @@ struct Scene {
   // [metrics]
   int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors
   bool poiseuille = false;  // Basa et al. 2008 eqs. 36-39
+  bool interface = false;   // two phases: 0.5 contour of the smoothed phase indicator, tip heights
 
   // The resolved scene as TOML text (all keys), written into summary.json.
   std::string resolved_toml;

@@ -82,6 +82,7 @@ checkpoint_every = 0.0         # simulated time between checkpoint.h5 writes (>=
 [metrics]
 ghia_re = 100                  # Ghia et al. 1982 centreline errors: 0 (off), 100 or 1000
 poiseuille = false             # Poiseuille error of Basa et al. 2008 eqs. 36-39
+interface = false              # two phases: interface_NNNNNN.csv (0.5 contour of the smoothed phase), bubble/spike tips
 )toml";
 }
 

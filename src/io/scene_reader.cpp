@@ -304,11 +304,15 @@ void read_time_output(const Section& root, Scene& s) {
   s.checkpoint_every = o.number("checkpoint_every", s.checkpoint_every);  // time between checkpoints; 0: end only
   o.require(s.checkpoint_every >= 0, "checkpoint_every", ">= 0", s.checkpoint_every);
 
-  const Section mt = root.section("metrics", {"ghia_re", "poiseuille"});
+  const Section mt = root.section("metrics", {"ghia_re", "poiseuille", "interface"});
   s.ghia_re = static_cast<int>(mt.integer("ghia_re", s.ghia_re));
   if (s.ghia_re != 0 && s.ghia_re != 100 && s.ghia_re != 1000)
     mt.fail("ghia_re", "must be 0 (off), 100 or 1000, got " + std::to_string(s.ghia_re));
   s.poiseuille = mt.boolean("poiseuille", s.poiseuille);
+  // Phase interface (Rayleigh-Taylor): contour CSV per output time, bubble and spike tips
+  s.interface = mt.boolean("interface", s.interface);
+  if (s.interface && (s.phases.empty() || s.dimension != 2))
+    mt.fail("interface", "needs a 2D scene with at least one [[phase]]");
 }
 
 }  // namespace

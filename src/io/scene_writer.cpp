@@ -110,7 +110,8 @@ std::string scene_to_toml(const Scene& s) {
     << "checkpoint_every = " << num(s.checkpoint_every) << "\n\n";
   o << "[metrics]\n"
     << "ghia_re = " << s.ghia_re << "\n"
-    << "poiseuille = " << boolean(s.poiseuille) << "\n";
+    << "poiseuille = " << boolean(s.poiseuille) << "\n"
+    << "interface = " << boolean(s.interface) << "\n";
   return o.str();
 }
 

@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-TIMES = (1.0, 3.0, 5.0)
+TIMES = tuple(float(t) for t in __import__('os').environ.get('RT_TIMES', '1 3 5').split())
 DTYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "Float32": "<f4", "UInt8": "u1"}
 
 

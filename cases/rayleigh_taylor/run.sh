@@ -15,7 +15,9 @@ run() {  # name, extra --set options
   "$bin" run "$scene" --out "$root/$name" --quiet "$@" > "$root/$name.log" 2>&1
   echo "   exit $? at $(date -u +%H:%M:%S)"
 }
-run isph_gpps "$@" --set method.scheme=isph-gpps
+# isph-gpps with the difference-form divergence and free-slip divergence images (Szewc §6): with C&R
+# eq. 17 it blew up at t ~ 2 on the coarse lattice.
+run isph_gpps "$@" --set method.scheme=isph-gpps --set method.ppe_divergence=difference --set boundary.free_slip_divergence=true
 run isph "$@" --set method.scheme=isph
 run isph_pw "$@" --set method.scheme=isph --set method.density_correction=pozorski_wawrenczuk
 run wcsph "$@" --set method.scheme=wcsph --set method.density_mode=summation

@@ -34,7 +34,7 @@ PhaseInterface phase_interface(const FluidFields& f, const std::vector<std::int3
         den += w;
         if (phase[f.src[b]] >= 1) num += w;
       });
-      chi[static_cast<std::size_t>(j * nx + i)] = den > 0 ? num / den : 0.0;
+      chi[static_cast<std::size_t>(j * nx + i)] = den > 0 ? num / den : NAN;  // a void: no contour
     }
   // Marching squares; the saddle cases take the two segments that keep the centre value's side.
   auto at = [&](long i, long j) { return chi[static_cast<std::size_t>(j * nx + i)]; };
@@ -43,6 +43,7 @@ PhaseInterface phase_interface(const FluidFields& f, const std::vector<std::int3
     for (long i = 0; i + 1 < nx; ++i) {
       const double x0 = xmin + i * spacing, y0 = ymin + j * spacing, x1 = x0 + spacing, y1 = y0 + spacing;
       const double c[4] = {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};  // counter-clockwise
+      if (std::isnan(c[0] + c[1] + c[2] + c[3])) continue;
       const double px[4] = {x0, x1, x1, x0}, py[4] = {y0, y0, y1, y1};
       std::vector<std::array<double, 2>> pts;  // crossings on edges 0-1, 1-2, 2-3, 3-0
       for (int e = 0; e < 4; ++e) {

@@ -2,7 +2,8 @@
 // §3.2): the 0.5 contour of a kernel-smoothed phase indicator,
 //   chi(x) = sum_b V_b chi_b W(x - x_b) / sum_b V_b W(x - x_b),  chi_b = 1 for phase >= 1, else 0,
 // evaluated on the nodes of a regular grid (spacing fluid.spacing, walls included; ghosts carry
-// their source's phase) and contoured by marching squares. The bubble tip is the highest point of
+// their source's phase; a node with no particle within the kernel support is a void and no contour
+// crosses its cells) and contoured by marching squares. The bubble tip is the highest point of
 // the contour (the light lower fluid rising), the spike tip the lowest (the heavy upper fluid
 // falling). Also the density statistics of Szewc eqs. 55-56 restricted to the upper phase.
 #pragma once

@@ -19,7 +19,7 @@ run() {  # name, extra --set options
 # eq. 17 it blew up at t ~ 2 on the coarse lattice.
 run isph_gpps "$@" --set method.scheme=isph-gpps --set method.ppe_divergence=difference --set boundary.free_slip_divergence=true
 run isph "$@" --set method.scheme=isph
-run isph_pw "$@" --set method.scheme=isph --set method.density_correction=pozorski_wawrenczuk
 run wcsph "$@" --set method.scheme=wcsph --set method.density_mode=summation
+run isph_pw "$@" --set method.scheme=isph --set method.density_correction=pozorski_wawrenczuk
 /usr/bin/python3 "$here/plot.py" "$root" isph-gpps="$root/isph_gpps" isph="$root/isph" isph+PW="$root/isph_pw" wcsph="$root/wcsph"
 /usr/bin/python3 "$here/summarise.py" "$root" isph_gpps isph isph_pw wcsph

@@ -60,6 +60,7 @@ ppe_pressure_level = "zero_mean"  # isph: free level of P, "zero_mean" | "zero_m
 ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
 gpps_spacing = 0              # isph-gpps: cell size of the auxiliary Poisson grid (Szewc §4.2); 0: fluid.spacing; must divide the box
+gpps_volume_relaxation = 0     # isph-gpps: beta in [0, 1] of the source term -beta (phi - 1)/dt^2, phi = particle volume per cell / cell volume (0: off)
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)

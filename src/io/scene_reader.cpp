@@ -228,7 +228,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "gpps_spacing", "centre_positions", "correction_threshold",
+                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "gpps_spacing", "gpps_volume_relaxation", "centre_positions", "correction_threshold",
                                             "correction_max_iterations", "correction_solver"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
   s.kernel = m.registered("kernel", "kernel", s.kernel);
@@ -267,6 +267,10 @@ void read_method(const Section& root, Scene& s) {
   m.require(s.gpps_spacing >= 0, "gpps_spacing", ">= 0", s.gpps_spacing);
   if (s.gpps_spacing != 0 && s.scheme != "isph-gpps")
     m.reporter().warn(m.key("gpps_spacing"), "unused by scheme " + s.scheme);
+  // isph-gpps: relaxation of the deposited particle volume per cell towards the cell volume (0: off)
+  s.gpps_volume_relaxation = m.number("gpps_volume_relaxation", s.gpps_volume_relaxation);
+  m.require(s.gpps_volume_relaxation >= 0 && s.gpps_volume_relaxation <= 1, "gpps_volume_relaxation", "in [0, 1]",
+            s.gpps_volume_relaxation);
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);
   // Pozorski-Wawrenczuk correction (Szewc §9): trigger threshold and iterations per step.
   s.correction_threshold = m.number("correction_threshold", s.correction_threshold);

@@ -92,6 +92,7 @@ std::string scene_to_toml(const Scene& s) {
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "gpps_spacing = " << num(s.gpps_spacing) << "\n"
+    << "gpps_volume_relaxation = " << num(s.gpps_volume_relaxation) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"
     << "correction_threshold = " << num(s.correction_threshold) << "\n"
     << "correction_max_iterations = " << s.correction_max_iterations << "\n"

@@ -26,7 +26,8 @@ GridSpec gpps_grid(const Scene& scene) {
   return g;
 }
 
-GridProjection::GridProjection(const Scene& scene) : poisson_(gpps_grid(scene)), fallback_density_(scene.density) {}
+GridProjection::GridProjection(const Scene& scene)
+    : poisson_(gpps_grid(scene)), fallback_density_(scene.density), volume_relaxation_(scene.gpps_volume_relaxation) {}
 
 GridCorrection GridProjection::solve(const FluidFields& f, const std::vector<double>& divergence, double dt) {
   const GridSpec& g = poisson_.grid();
@@ -39,10 +40,16 @@ GridCorrection GridProjection::solve(const FluidFields& f, const std::vector<dou
   }
   const GridDeposit rho = deposit(g, n, f.x.data(), y, volume.data(), f.rho0.data(), fallback_density_);
   const GridDeposit src = deposit(g, n, f.x.data(), y, volume.data(), source.data(), 0.0);
+  std::vector<double> rhs = src.value;
+  if (volume_relaxation_ > 0) {  // ask for div u = beta (phi - 1)/dt: over-full cells expand
+    const double cell = std::pow(g.h, f.dim);
+    for (std::size_t i = 0; i < rhs.size(); ++i)
+      rhs[i] -= volume_relaxation_ * (src.weight[i] / cell - 1.0) / (dt * dt);
+  }
   GridCorrection c;
   c.refactorised = poisson_.set_density(rho.value);
   std::vector<double> p;
-  c.residual = poisson_.solve(src.value, p);
+  c.residual = poisson_.solve(rhs, p);
   std::vector<double> ax, ay;
   poisson_.acceleration(p, ax, ay);
   c.ax = interpolate(g, n, f.x.data(), y, ax);

@@ -4,6 +4,10 @@
 // solved there (grid_poisson.hpp: five-point flux form, Neumann walls, factorised once by KLU and
 // refactorised only when the density on the grid changes), and the acceleration (1/rho) grad p is
 // interpolated back to the particles, where the velocity correction of eq. 30 uses it.
+// Optional volume relaxation (method.gpps_volume_relaxation = beta > 0; not in Szewc): the grid source
+// becomes div(u*)/dt - beta (phi_i - 1)/dt^2 with phi_i = sum_a w_ia V_a / h^d the particle volume
+// deposited in cell i, so that over-full cells expand and empty ones fill (the particle
+// clustering that the smooth grid correction does not resist otherwise).
 // The density on the grid is the volume-weighted mean of the particles' phase densities, so for one
 // phase it is uniform and the matrix never changes.
 #pragma once
@@ -36,6 +40,7 @@ class GridProjection {
  private:
   GridPoisson poisson_;
   double fallback_density_;
+  double volume_relaxation_;
 };
 
 }  // namespace arksph

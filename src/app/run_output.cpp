@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "diagnostics/ghia.hpp"
 #include "diagnostics/nearest_neighbor.hpp"
+#include "diagnostics/phase_interface.hpp"
 #include "diagnostics/poiseuille.hpp"
 #include "io/expression.hpp"
 #include "io/vtp_writer.hpp"
@@ -44,6 +45,7 @@ std::vector<std::string> RunOutput::csv_columns() const {
   std::vector<std::string> c = {"t", "dt", "steps", "kinetic_energy", "max_speed", "cv", "density_mean", "density_rms"};
   if (scene_.ghia_re) c.insert(c.end(), {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms"});
   if (scene_.poiseuille) c.insert(c.end(), {"tstar", "poiseuille_eps"});
+  if (scene_.interface) c.insert(c.end(), {"bubble_y", "spike_y", "upper_density_mean", "upper_density_rms"});
   return c;
 }
 
@@ -85,6 +87,19 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     }
     write_csv(scene_.directory + "/poiseuille_profile.csv", {"y", "u_sph", "u_exact"}, prof);
     case_metrics_.set("poiseuille_eps_max_tstar_0.5_2", eps_max_window_);
+  }
+  if (scene_.interface) {
+    const PhaseInterface pi = phase_interface(f, model_.particles.phase, scene_.min[0], scene_.min[1], scene_.max[0],
+                                              scene_.max[1], scene_.spacing);
+    const PhaseDensity pd = upper_phase_density(f, model_.particles.phase, number_density(f));
+    row.insert(row.end(), {pi.bubble_y, pi.spike_y, pd.mean, pd.rms});
+    case_metrics_.set("bubble_y", pi.bubble_y).set("spike_y", pi.spike_y);
+    case_metrics_.set("upper_density_mean", pd.mean).set("upper_density_rms", pd.rms);
+    std::vector<std::vector<double>> seg;
+    for (const auto& s : pi.segments) seg.push_back({s[0], s[1], s[2], s[3]});
+    char name[64];
+    std::snprintf(name, sizeof name, "/interface_%06d.csv", frames_);
+    write_csv(scene_.directory + name, {"x0", "y0", "x1", "y1"}, seg);
   }
   if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
     const double* p = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
@@ -171,7 +186,8 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   metrics.set("kinetic_energy", last_.kinetic_energy).set("max_speed", last_.max_speed).set("cv", last_.cv);
   metrics.set("density_mean", last_.density_mean).set("density_rms", last_.density_rms);
   for (const char* key : {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms", "poiseuille_rms",
-                          "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2"})
+                          "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2", "bubble_y", "spike_y",
+                          "upper_density_mean", "upper_density_rms"})
     if (const Json* v = case_metrics_.find(key)) metrics.set(key, *v);
   j.set("metrics", metrics);
   Json params = Json::object();

@@ -45,9 +45,14 @@ Model build_model(const Scene& scene) {
   model.terms.push_back("kernel:" + scene.kernel);
   model.terms.push_back("integrator:erkstep:" + scene.integrator);
   model.rhs = std::make_unique<RhsEvaluator>(scene, model.particles, std::move(kernel), std::move(terms));
-  if (scene.scheme == "isph") {
+  if (scene.scheme == "isph" || scene.scheme == "isph-gpps") {
     model.projection = std::make_unique<Projection>(scene, *model.rhs);
-    model.terms.push_back("projection:ppe-" + scene.ppe_solver);
+    if (scene.scheme == "isph-gpps") {
+      const GridSpec g = gpps_grid(scene);
+      model.terms.push_back("projection:gpps-klu:" + std::to_string(g.nx) + "x" + std::to_string(g.ny));
+    } else {
+      model.terms.push_back("projection:ppe-" + scene.ppe_solver);
+    }
     if (scene.centre_positions) model.terms.push_back("projection:centred_positions");
     if (scene.projection_points == "stages") model.terms.push_back("projection:stages");
     if (scene.density_correction == "pozorski_wawrenczuk") model.terms.push_back("correction:pozorski_wawrenczuk");

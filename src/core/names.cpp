@@ -12,7 +12,7 @@ namespace arksph {
 
 std::vector<std::string> registered_names(const std::string& family) {
   if (family == "kernel") return kernel_names();
-  if (family == "scheme") return {"wcsph", "isph"};
+  if (family == "scheme") return {"wcsph", "isph", "isph-gpps"};
   if (family == "ppe_solver") return poisson_solver_names();
   if (family == "viscosity_model") return viscosity_model_names();
   if (family == "density_mode") return {"continuity", "summation"};

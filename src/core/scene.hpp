@@ -72,6 +72,8 @@ struct Scene {
   std::string ppe_pressure_level = "zero_mean";  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)
   std::string ppe_solver = "klu";      // isph: "klu" (direct) | "cg" (incomplete-Cholesky CG, warm start)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
+  double gpps_spacing = 0.0;           // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing
+  double gpps_volume_relaxation = 0.0; // isph-gpps: beta of the cell-volume source term (0: off, Szewc's GPPS)
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)
   std::string projection_points = "step";  // isph: project after each "step" (C&R) | after each "stages" too
   double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
@@ -94,6 +96,7 @@ struct Scene {
   // [metrics]
   int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors
   bool poiseuille = false;  // Basa et al. 2008 eqs. 36-39
+  bool interface = false;   // two phases: 0.5 contour of the smoothed phase indicator, tip heights
 
   // The resolved scene as TOML text (all keys), written into summary.json.
   std::string resolved_toml;

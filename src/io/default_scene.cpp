@@ -64,6 +64,8 @@ ppe_divergence = "cummins_rudman"  # isph: PPE source, "cummins_rudman" (C&R eq.
 ppe_pressure_level = "zero_mean"  # isph: free level of P, "zero_mean" | "zero_min" (P >= 0, so eq. 11 never attracts)
 ppe_solver = "klu"             # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG) | "auto" (KLU up to 1,000 particles, else CG); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
+gpps_spacing = 0              # isph-gpps: cell size of the auxiliary Poisson grid (Szewc §4.2); 0: fluid.spacing; must divide the box
+gpps_volume_relaxation = 0     # isph-gpps: beta in [0, 1] of the source term -beta (phi - 1)/dt^2, phi = particle volume per cell / cell volume (0: off)
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
 projection_points = "step"     # isph: project after each "step" (C&R) | "stages": also after every ERK stage
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
@@ -87,6 +89,7 @@ checkpoint_every = 0.0         # simulated time between checkpoint.h5 writes (>=
 [metrics]
 ghia_re = 100                  # Ghia et al. 1982 centreline errors: 0 (off), 100 or 1000
 poiseuille = false             # Poiseuille error of Basa et al. 2008 eqs. 36-39
+interface = false              # two phases: interface_NNNNNN.csv (0.5 contour of the smoothed phase), bubble/spike tips
 )toml";
 }
 

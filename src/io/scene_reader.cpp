@@ -228,7 +228,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "centre_positions", "projection_points", "correction_threshold",
+                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_tolerance", "gpps_spacing", "gpps_volume_relaxation", "centre_positions", "projection_points", "correction_threshold",
                                             "correction_max_iterations", "correction_solver",
                                             "cleary_xi", "kernel_correction", "pressure_reduction",
                                             "equation_of_state", "gas_gamma"});
@@ -275,6 +275,15 @@ void read_method(const Section& root, Scene& s) {
     m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);
   m.require(s.ppe_tolerance > 0 && s.ppe_tolerance < 1, "ppe_tolerance", "in (0, 1)", s.ppe_tolerance);
+  // isph-gpps: cell size of the auxiliary Poisson grid (Szewc §4.2); 0 takes fluid.spacing
+  s.gpps_spacing = m.number("gpps_spacing", s.gpps_spacing);
+  m.require(s.gpps_spacing >= 0, "gpps_spacing", ">= 0", s.gpps_spacing);
+  if (s.gpps_spacing != 0 && s.scheme != "isph-gpps")
+    m.reporter().warn(m.key("gpps_spacing"), "unused by scheme " + s.scheme);
+  // isph-gpps: relaxation of the deposited particle volume per cell towards the cell volume (0: off)
+  s.gpps_volume_relaxation = m.number("gpps_volume_relaxation", s.gpps_volume_relaxation);
+  m.require(s.gpps_volume_relaxation >= 0 && s.gpps_volume_relaxation <= 1, "gpps_volume_relaxation", "in [0, 1]",
+            s.gpps_volume_relaxation);
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);
   // "step": project after each accepted step (C&R); "stages": also every ERK stage z_i, i >= 2
   s.projection_points = m.one_of("projection_points", {"step", "stages"}, s.projection_points);
@@ -314,11 +323,15 @@ void read_time_output(const Section& root, Scene& s) {
   s.checkpoint_every = o.number("checkpoint_every", s.checkpoint_every);  // time between checkpoints; 0: end only
   o.require(s.checkpoint_every >= 0, "checkpoint_every", ">= 0", s.checkpoint_every);
 
-  const Section mt = root.section("metrics", {"ghia_re", "poiseuille"});
+  const Section mt = root.section("metrics", {"ghia_re", "poiseuille", "interface"});
   s.ghia_re = static_cast<int>(mt.integer("ghia_re", s.ghia_re));
   if (s.ghia_re != 0 && s.ghia_re != 100 && s.ghia_re != 1000)
     mt.fail("ghia_re", "must be 0 (off), 100 or 1000, got " + std::to_string(s.ghia_re));
   s.poiseuille = mt.boolean("poiseuille", s.poiseuille);
+  // Phase interface (Rayleigh-Taylor): contour CSV per output time, bubble and spike tips
+  s.interface = mt.boolean("interface", s.interface);
+  if (s.interface && (s.phases.empty() || s.dimension != 2))
+    mt.fail("interface", "needs a 2D scene with at least one [[phase]]");
 }
 
 }  // namespace

@@ -96,6 +96,8 @@ std::string scene_to_toml(const Scene& s) {
     << "ppe_pressure_level = " << quote(s.ppe_pressure_level) << "\n"
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
+    << "gpps_spacing = " << num(s.gpps_spacing) << "\n"
+    << "gpps_volume_relaxation = " << num(s.gpps_volume_relaxation) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"
     << "projection_points = " << quote(s.projection_points) << "\n"
     << "correction_threshold = " << num(s.correction_threshold) << "\n"
@@ -115,7 +117,8 @@ std::string scene_to_toml(const Scene& s) {
     << "checkpoint_every = " << num(s.checkpoint_every) << "\n\n";
   o << "[metrics]\n"
     << "ghia_re = " << s.ghia_re << "\n"
-    << "poiseuille = " << boolean(s.poiseuille) << "\n";
+    << "poiseuille = " << boolean(s.poiseuille) << "\n"
+    << "interface = " << boolean(s.interface) << "\n";
   return o.str();
 }
 

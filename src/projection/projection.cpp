@@ -23,6 +23,7 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       exact_operator_(scene.ppe_operator == "exact"),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min") {
+  if (scene.scheme == "isph-gpps") grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
 }
 
@@ -70,13 +71,20 @@ void Projection::project(double t, double* y) {
 }
 
 void Projection::project_velocities(double dt, double t, double* y) {
-  const StateLayout& L = rhs_.layout();
   rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u*
   const FluidFields& f = rhs_.fields();
-  const std::size_t n = L.n;
-
-  // 2. Pressure Poisson equation.
+  // 2.-3. Pressure Poisson equation and velocity correction, on the particles or on the grid.
   const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  if (grid_) {
+    project_on_grid(f, div, dt, y);
+  } else {
+    project_on_particles(f, div, dt, y);
+  }
+}
+
+void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
   const PoissonSystem sys = exact_operator_? assemble_ppe_exact(f, div, dt) : assemble_ppe(f, div, dt);
   if (solution_.size() != n) solution_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
@@ -111,6 +119,31 @@ void Projection::project_velocities(double dt, double t, double* y) {
     });
     u[a] -= dt * gx;
     if (v) v[a] -= dt * gy;
+  }
+}
+
+void Projection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
+  const auto ts = std::chrono::steady_clock::now();
+  GridCorrection c = grid_->solve(f, div, dt);
+  stats_.solve_seconds += since(ts);
+  ++stats_.solves;
+  stats_.iterations += 1;
+  stats_.symbolic_analyses += c.refactorised ? 1 : 0;
+  stats_.last_residual = c.residual;
+  stats_.max_residual = std::max(stats_.max_residual, c.residual);
+  pressure_ = std::move(c.pressure);
+  if (zero_min_level_) {
+    const double level = *std::min_element(pressure_.begin(), pressure_.end());
+    for (double& p : pressure_) p -= level;
+  }
+  // Velocity correction, Szewc eq. 30, with (1/rho) grad p from the grid.
+  double* u = y + L.vel(0);
+  for (std::size_t a = 0; a < n; ++a) u[a] -= dt * c.ax[a];
+  if (L.dim == 2) {
+    double* v = y + L.vel(1);
+    for (std::size_t a = 0; a < n; ++a) v[a] -= dt * c.ay[a];
   }
 }
 

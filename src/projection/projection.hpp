@@ -7,6 +7,8 @@
 //   4. optionally, positions centred in time: r = r_n + dt (u + u_n)/2 (eq. 12).
 // With ARKSPH_FORWARD_EULER_1_1 this is C&R's scheme (eqs. 8-12), except that ARKODE evaluates the
 // viscous term at r_n where eq. 9 reads chi^n(r*): a difference of O(dt^2) per step.
+// Scheme isph-gpps replaces steps 2-3 by the grid-projected Poisson solver of Szewc et al. 2012 §4.2
+// (ProjectionGrid_Szewc2012.hpp): same source, Poisson equation on a regular grid, u = u* - dt a_grid.
 #pragma once
 #include <memory>
 #include <string>
@@ -14,6 +16,7 @@
 
 #include "core/scene.hpp"
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
 #include "rhs/evaluator.hpp"
 
@@ -24,7 +27,7 @@ struct ProjectionStats {
   double seconds = 0;           // assembly + solve + correction
   double solve_seconds = 0;     // the linear solve alone
   double last_residual = 0, max_residual = 0;
-  long iterations = 0, symbolic_analyses = 0;
+  long iterations = 0, symbolic_analyses = 0;  // isph-gpps: symbolic_analyses counts grid factorisations
 };
 
 class Projection {
@@ -39,7 +42,7 @@ class Projection {
   void project_stage(double t, double* y);
   const std::vector<double>& pressure() const { return pressure_; }
   const ProjectionStats& stats() const { return stats_; }
-  std::string solver_name() const { return solver_->name(); }
+  std::string solver_name() const { return grid_ ? "grid-klu" : solver_->name(); }
   const DensityCorrection* correction() const { return correction_.get(); }
   // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
   // factorisation), so that a run restarted from a checkpoint continues bit for bit.
@@ -47,6 +50,8 @@ class Projection {
 
  private:
   void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
+  void project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
+  void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
 
   RhsEvaluator& rhs_;
   std::unique_ptr<PoissonSolver> solver_;
@@ -59,6 +64,7 @@ class Projection {
   std::vector<double> y_prev_;
   std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)
   std::vector<double> solution_;  // the Poisson solver's solution (P_0 = 0): the next warm start
+  std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   ProjectionStats stats_;
 };

@@ -1,0 +1,61 @@
+#include "projection/ProjectionGrid_Szewc2012.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "projection/grid_transfer.hpp"
+
+namespace arksph {
+
+GridSpec gpps_grid(const Scene& scene) {
+  GridSpec g;
+  g.h = scene.gpps_spacing > 0 ? scene.gpps_spacing : scene.spacing;
+  g.x0 = scene.min[0];
+  g.y0 = scene.dimension == 2 ? scene.min[1] : 0.0;
+  int count[2] = {1, 1};
+  for (int k = 0; k < scene.dimension; ++k) {
+    const double cells = (scene.max[k] - scene.min[k]) / g.h;
+    count[k] = static_cast<int>(std::lround(cells));
+    if (count[k] < 2 || std::abs(cells - count[k]) > 1e-6 * cells)
+      throw InputError(scene.source + ": method.gpps_spacing: " + std::to_string(g.h) +
+                       " must divide the box length into at least 2 cells");
+    g.periodic[k] = scene.sides[2 * k].kind == SideKind::periodic;
+  }
+  g.nx = count[0];
+  g.ny = count[1];
+  return g;
+}
+
+GridProjection::GridProjection(const Scene& scene)
+    : poisson_(gpps_grid(scene)), fallback_density_(scene.density), volume_relaxation_(scene.gpps_volume_relaxation) {}
+
+GridCorrection GridProjection::solve(const FluidFields& f, const std::vector<double>& divergence, double dt) {
+  const GridSpec& g = poisson_.grid();
+  const std::size_t n = f.n_real;
+  const double* y = f.dim == 2 ? f.y.data() : nullptr;
+  std::vector<double> volume(n), source(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    volume[a] = f.m[a] / f.rho[a];
+    source[a] = divergence[a] / dt;
+  }
+  const GridDeposit rho = deposit(g, n, f.x.data(), y, volume.data(), f.rho0.data(), fallback_density_);
+  const GridDeposit src = deposit(g, n, f.x.data(), y, volume.data(), source.data(), 0.0);
+  std::vector<double> rhs = src.value;
+  if (volume_relaxation_ > 0) {  // ask for div u = beta (phi - 1)/dt: over-full cells expand
+    const double cell = std::pow(g.h, f.dim);
+    for (std::size_t i = 0; i < rhs.size(); ++i)
+      rhs[i] -= volume_relaxation_ * (src.weight[i] / cell - 1.0) / (dt * dt);
+  }
+  GridCorrection c;
+  c.refactorised = poisson_.set_density(rho.value);
+  std::vector<double> p;
+  c.residual = poisson_.solve(rhs, p);
+  std::vector<double> ax, ay;
+  poisson_.acceleration(p, ax, ay);
+  c.ax = interpolate(g, n, f.x.data(), y, ax);
+  if (f.dim == 2) c.ay = interpolate(g, n, f.x.data(), y, ay);
+  c.pressure = interpolate(g, n, f.x.data(), y, p);
+  return c;
+}
+
+}  // namespace arksph

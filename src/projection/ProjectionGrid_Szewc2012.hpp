@@ -1,0 +1,46 @@
+// The grid-projected Poisson solver (GPPS) of Szewc et al. 2012 §4.2: the source of the pressure
+// Poisson equation (eq. 32), div(u*)/dt computed on the particles, is projected onto a regular
+// cell-centred auxiliary grid (grid_transfer.hpp), the equation div((1/rho) grad p) = div(u*)/dt is
+// solved there (grid_poisson.hpp: five-point flux form, Neumann walls, factorised once by KLU and
+// refactorised only when the density on the grid changes), and the acceleration (1/rho) grad p is
+// interpolated back to the particles, where the velocity correction of eq. 30 uses it.
+// Optional volume relaxation (method.gpps_volume_relaxation = beta > 0; not in Szewc): the grid source
+// becomes div(u*)/dt - beta (phi_i - 1)/dt^2 with phi_i = sum_a w_ia V_a / h^d the particle volume
+// deposited in cell i, so that over-full cells expand and empty ones fill (the particle
+// clustering that the smooth grid correction does not resist otherwise).
+// The density on the grid is the volume-weighted mean of the particles' phase densities, so for one
+// phase it is uniform and the matrix never changes.
+#pragma once
+#include <vector>
+
+#include "core/scene.hpp"
+#include "projection/grid_poisson.hpp"
+#include "rhs/fluid_fields.hpp"
+
+namespace arksph {
+
+// The auxiliary grid of a scene: cells of method.gpps_spacing (0: fluid.spacing) over the domain.
+GridSpec gpps_grid(const Scene& scene);
+
+struct GridCorrection {
+  std::vector<double> ax, ay;    // (1/rho) grad p at the real particles
+  std::vector<double> pressure;  // p interpolated at the real particles
+  double residual = 0;           // relative residual of the grid solve
+  bool refactorised = false;
+};
+
+class GridProjection {
+ public:
+  explicit GridProjection(const Scene& scene);
+  // The correction for the particles of f (at r*), from their velocity divergence div(u*).
+  GridCorrection solve(const FluidFields& f, const std::vector<double>& divergence, double dt);
+  long factorisations() const { return poisson_.factorisations(); }
+  const GridSpec& grid() const { return poisson_.grid(); }
+
+ private:
+  GridPoisson poisson_;
+  double fallback_density_;
+  double volume_relaxation_;
+};
+
+}  // namespace arksph

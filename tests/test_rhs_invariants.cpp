@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <new>
 
 #include "doctest/doctest.h"
@@ -78,9 +79,10 @@ TEST_CASE("rhs: 1 and 2 OpenMP threads give bit-identical derivatives") {
 }
 
 TEST_CASE("rhs: f(t, y) allocates nothing between neighbour rebuilds") {
-  for (bool walls : {false, true}) {
-    CAPTURE(walls);
-    const Scene scene = scene_variant(walls);
+  for (int variant : {0, 1, 2}) {  // periodic; walls, linear wall velocity; walls, quadratic
+    CAPTURE(variant);
+    Scene scene = scene_variant(variant > 0);
+    if (variant == 2) scene = read_scene_text(scene.resolved_toml, "<test>", {"boundary.wall_velocity=quadratic"}, std::cerr);
     Model model = build_model(scene);
     std::vector<double> y = disturbed_state(model), ydot(y.size());
     model.rhs->eval(0.0, y.data(), ydot.data());  // first call: lists built, buffers sized

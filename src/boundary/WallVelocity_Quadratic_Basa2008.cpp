@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "boundary/wall_bins.hpp"
+
 namespace arksph {
 
 QuadraticWallVelocity::QuadraticWallVelocity(const Scene& scene, double dx) : scene_(scene), dx_(dx) {}
@@ -12,23 +14,21 @@ void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const d
   const double* pos[2] = {x, y};
   double* vel[2] = {u, v};
   for (int side = 0; side < 4; ++side) {
+    if (!WallBins::applies(scene_, side)) continue;
     const SideSpec& s = scene_.sides[side];
-    if (s.kind != SideKind::wall || s.slip != SlipKind::no_slip) continue;
-    const int k = side / 2, t = 1 - k;  // normal and tangential axes
-    const double plane = side % 2 ? scene_.max[k] : scene_.min[k];
-    const double lo_t = scene_.min[t], len_t = scene_.max[t] - scene_.min[t];
-    const long bins = std::max(1L, std::lround(len_t / dx_));
-    const bool periodic_t = scene_.sides[2 * t].kind == SideKind::periodic;
-    auto bin_of = [&](double c) {
-      long b = static_cast<long>(std::floor((c - lo_t) / dx_));
-      if (periodic_t) b = ((b % bins) + bins) % bins;
-      return std::clamp(b, 0L, bins - 1);
-    };
+    const WallBins wb(scene_, side, dx_);
+    const int k = wb.k, t = wb.t;
+    const double plane = wb.plane;
+    auto bin_of = [&](double c) { return wb.of(c); };
+    const long bins = wb.bins;
     const auto nb = static_cast<std::size_t>(bins);
     // Nearest fluid particle in each bin, then the nearest one at least dx/2 further from the wall.
     first_.assign(nb, -1);
     second_.assign(nb, -1);
-    std::vector<double> d1(nb, 3.0 * dx_), d2(nb, 4.0 * dx_);
+    std::vector<double>& d1 = d1_;  // member scratch: no allocation in f
+    std::vector<double>& d2 = d2_;
+    d1.assign(nb, 3.0 * dx_);
+    d2.assign(nb, 4.0 * dx_);
     for (std::size_t a = 0; a < n_real; ++a) {
       const double d = std::abs(pos[k][a] - plane);
       const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));

@@ -26,6 +26,7 @@ class QuadraticWallVelocity {
   const Scene& scene_;
   double dx_;
   mutable std::vector<long> first_, second_;  // per tangential bin: nearest and next row (-1: none)
+  mutable std::vector<double> d1_, d2_;       // their wall distances (scratch)
 };
 
 }  // namespace arksph

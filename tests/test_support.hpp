@@ -2,7 +2,9 @@
 #pragma once
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
+#include <random>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "app/setup.hpp"
 #include "integrate/erk_integrator.hpp"
+#include "rhs/terms.hpp"
 
 namespace arksph::testing {
 
@@ -76,6 +79,39 @@ inline std::vector<double> one_projected_step(const Scene& scene, Model& model, 
   proj->begin_step(0.0, y0.data());
   integ.step(scene.dt);
   return {integ.state(), integ.state() + integ.size()};
+}
+
+// Momentum rate of the scene's right-hand side on its lattice jittered by +-0.2 dx, with random
+// velocities (and densities perturbed by 1 %, so that pressure terms are not trivially zero):
+// px, py = sum_a m_a du_a/dt, dv_a/dt, and the scale sum_a m_a (|du_a/dt| + |dv_a/dt|).
+struct MomentumRate {
+  double px = 0, py = 0, scale = 0;
+};
+inline MomentumRate momentum_rate(const Scene& scene, unsigned seed) {
+  Model model = build_model(scene);
+  ParticleSet ps = model.particles;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), vel(-1, 1);
+  for (std::size_t a = 0; a < ps.n; ++a) {
+    ps.init_pos[0][a] += jitter(rng);
+    ps.init_pos[1][a] += jitter(rng);
+    ps.init_vel[0][a] = vel(rng);
+    ps.init_vel[1][a] = vel(rng);
+  }
+  RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
+  std::vector<double> y(rhs.layout().size()), ydot(y.size());
+  rhs.initial_state(y.data());
+  if (rhs.layout().has_density)
+    for (std::size_t a = 0; a < ps.n; ++a) y[rhs.layout().rho() + a] *= 1.0 + 0.01 * vel(rng);
+  rhs.eval(0.0, y.data(), ydot.data());
+  MomentumRate m;
+  for (std::size_t a = 0; a < ps.n; ++a) {
+    const double ax = ydot[rhs.layout().vel(0) + a], ay = ydot[rhs.layout().vel(1) + a];
+    m.px += ps.mass[a] * ax;
+    m.py += ps.mass[a] * ay;
+    m.scale += ps.mass[a] * (std::abs(ax) + std::abs(ay));
+  }
+  return m;
 }
 
 }  // namespace arksph::testing

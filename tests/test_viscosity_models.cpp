@@ -144,32 +144,10 @@ namespace {
 // Opposite pair forces make the ratio round-off; 1e-13 allows for ~10^4 terms of either sign.
 double momentum_ratio(const std::vector<std::string>& sets, double* scale_out = nullptr) {
   std::ostringstream warnings;
-  Scene scene = read_scene_text(testing::kTaylorGreenBox + "[time]\nend = 0.05\n", "test", sets, warnings);
-  Model model = build_model(scene);
-  ParticleSet ps = model.particles;
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), vel(-1, 1);
-  for (std::size_t a = 0; a < ps.n; ++a) {
-    ps.init_pos[0][a] += jitter(rng);
-    ps.init_pos[1][a] += jitter(rng);
-    ps.init_vel[0][a] = vel(rng);
-    ps.init_vel[1][a] = vel(rng);
-  }
-  RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
-  std::vector<double> y(rhs.layout().size()), ydot(y.size());
-  rhs.initial_state(y.data());
-  if (rhs.layout().has_density)
-    for (std::size_t a = 0; a < ps.n; ++a) y[rhs.layout().rho() + a] *= 1.0 + 0.01 * vel(rng);
-  rhs.eval(0.0, y.data(), ydot.data());
-  double px = 0, py = 0, scale = 0;
-  for (std::size_t a = 0; a < ps.n; ++a) {
-    const double ax = ydot[rhs.layout().vel(0) + a], ay = ydot[rhs.layout().vel(1) + a];
-    px += ps.mass[a] * ax;
-    py += ps.mass[a] * ay;
-    scale += ps.mass[a] * (std::abs(ax) + std::abs(ay));
-  }
-  if (scale_out) *scale_out = scale;
-  return std::max(std::abs(px), std::abs(py)) / scale;
+  const Scene scene = read_scene_text(testing::kTaylorGreenBox + "[time]\nend = 0.05\n", "test", sets, warnings);
+  const testing::MomentumRate m = testing::momentum_rate(scene, 7);
+  if (scale_out) *scale_out = m.scale;
+  return std::max(std::abs(m.px), std::abs(m.py)) / m.scale;
 }
 }  // namespace
 

@@ -30,34 +30,10 @@ Scene periodic_scene(const std::vector<std::string>& sets) {
 // lattice with random velocities: the symmetric forms give exactly opposite pair forces, so the
 // ratio is round-off (1e-13 allows for summing ~10^4 terms of alternating sign in double precision).
 void check_momentum(const std::vector<std::string>& sets) {
-  Scene scene = periodic_scene(sets);
-  Model model = build_model(scene);
-  ParticleSet ps = model.particles;
-  std::mt19937 rng(42);
-  std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), vel(-1, 1);
-  for (std::size_t a = 0; a < ps.n; ++a) {
-    ps.init_pos[0][a] += jitter(rng);
-    ps.init_pos[1][a] += jitter(rng);
-    ps.init_vel[0][a] = vel(rng);
-    ps.init_vel[1][a] = vel(rng);
-  }
-  RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
-  std::vector<double> y(rhs.layout().size()), ydot(y.size());
-  rhs.initial_state(y.data());
-  // Perturb the densities too, so that the pressure term is not trivially zero.
-  if (rhs.layout().has_density)
-    for (std::size_t a = 0; a < ps.n; ++a) y[rhs.layout().rho() + a] *= 1.0 + 0.01 * vel(rng);
-  rhs.eval(0.0, y.data(), ydot.data());
-  double px = 0, py = 0, scale = 0;
-  for (std::size_t a = 0; a < ps.n; ++a) {
-    const double ax = ydot[rhs.layout().vel(0) + a], ay = ydot[rhs.layout().vel(1) + a];
-    px += ps.mass[a] * ax;
-    py += ps.mass[a] * ay;
-    scale += ps.mass[a] * (std::abs(ax) + std::abs(ay));
-  }
-  CHECK(scale > 1e-3);  // the forces are not trivially zero
-  CHECK(std::abs(px) / scale < 1e-13);
-  CHECK(std::abs(py) / scale < 1e-13);
+  const testing::MomentumRate m = testing::momentum_rate(periodic_scene(sets), 42);
+  CHECK(m.scale > 1e-3);  // the forces are not trivially zero
+  CHECK(std::abs(m.px) / m.scale < 1e-13);
+  CHECK(std::abs(m.py) / m.scale < 1e-13);
 }
 
 std::vector<double> integrate(const Scene& scene, const std::string& table, double dt) {

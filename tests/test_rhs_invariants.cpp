@@ -17,7 +17,13 @@ namespace {
 std::atomic<long> g_allocations{0};
 }  // namespace
 
-// Counting global allocator for this test binary (malloc-backed, so sanitizers still see it).
+// Counting global allocator for this test binary. Not under AddressSanitizer, which owns operator
+// new/delete itself (a replacement there mixes its allocations with our free: alloc-dealloc
+// mismatch); the allocation test then reports itself skipped and runs in the normal build.
+#if defined(__SANITIZE_ADDRESS__)
+#define ARKSPH_COUNTING_ALLOCATOR 0
+#else
+#define ARKSPH_COUNTING_ALLOCATOR 1
 void* operator new(std::size_t n) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(n ? n : 1)) return p;
@@ -28,6 +34,7 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#endif
 
 using namespace arksph;
 
@@ -79,6 +86,10 @@ TEST_CASE("rhs: 1 and 2 OpenMP threads give bit-identical derivatives") {
 }
 
 TEST_CASE("rhs: f(t, y) allocates nothing between neighbour rebuilds") {
+  if (!ARKSPH_COUNTING_ALLOCATOR) {
+    MESSAGE("skipped: AddressSanitizer replaces operator new");
+    return;
+  }
   for (int variant : {0, 1, 2}) {  // periodic; walls, linear wall velocity; walls, quadratic
     CAPTURE(variant);
     Scene scene = scene_variant(variant > 0);

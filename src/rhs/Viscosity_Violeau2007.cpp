@@ -3,6 +3,11 @@
 //                        (u_ab . r_ab) / (r_ab^2 + eta^2) grad_a W_ab,     eta = 0.1 h,
 // with mu / rho = nu. Radial pair forces: conserves linear and angular momentum (uncorrected).
 // With a kernel correction (Basa §4) grad_a W_ab is replaced by the corrected gradient.
+// The same formula is Szewc et al. 2012 eq. 24 (Cummins & Rudman 1999 eq. 2, after Monaghan; C&R
+// write the constant as 4 / xi with xi = 0.24, and 8 is xi = 1/4, exact for a divergence-free 2D
+// field): the scene name "monaghan" builds this term under the name viscosity:monaghan.
+#include <utility>
+
 #include "kernels/kernel.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/terms.hpp"
@@ -11,7 +16,8 @@ namespace arksph {
 
 class ViscosityVioleau final : public Term {
  public:
-  std::string name() const override { return "viscosity:violeau"; }
+  explicit ViscosityVioleau(std::string name) : name_(std::move(name)) {}
+  std::string name() const override { return name_; }
   Stage stage() const override { return Stage::force; }
   void apply(FluidFields& f) const override {
     const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
@@ -31,8 +37,12 @@ class ViscosityVioleau final : public Term {
       if (f.dim == 2) f.dvdt[a] += ay;
     }
   }
+
+ private:
+  std::string name_;
 };
 
-std::unique_ptr<Term> make_viscosity_violeau() { return std::make_unique<ViscosityVioleau>(); }
+std::unique_ptr<Term> make_viscosity_violeau() { return std::make_unique<ViscosityVioleau>("viscosity:violeau"); }
+std::unique_ptr<Term> make_viscosity_monaghan() { return std::make_unique<ViscosityVioleau>("viscosity:monaghan"); }
 
 }  // namespace arksph

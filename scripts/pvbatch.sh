@@ -10,4 +10,21 @@ PYTHONPATH="$SITE${PYTHONPATH:+:$PYTHONPATH}"
 export PYTHONPATH
 # Start the free-display search at a number of our own, not at 99 for everyone: concurrent
 # xvfb-run -a calls race for the same display, and a just-closed one may still be going away.
-exec xvfb-run -a -n $((100 + $$ % 400)) -s "-screen 0 1920x1080x24" pvbatch "$@"
+# On a loaded machine a fresh Xvfb sometimes refuses pvbatch's OpenGL window ("bad X server
+# connection", seen 2 times in 5 at load 7, while xdpyinfo on the same server works); a new server
+# then works, so such a failure is retried with a new Xvfb, at most 8 attempts.
+log="$(mktemp)"
+trap 'rm -f "$log"' EXIT
+attempt=1
+while :; do
+  status=0
+  xvfb-run -a -n $((100 + ($$ + 37 * attempt) % 400)) -s "-screen 0 1920x1080x24" pvbatch "$@" 2>"$log" || status=$?
+  if [ "$status" -ne 0 ] && [ "$attempt" -lt 8 ] && grep -q "bad X server connection" "$log"; then
+    echo "pvbatch.sh: the X server refused the render window (attempt $attempt); retrying with a new one" >&2
+    attempt=$((attempt + 1))
+    sleep 1
+    continue
+  fi
+  cat "$log" >&2
+  exit "$status"
+done

@@ -303,3 +303,33 @@ TEST_CASE("isph: the auto Poisson solver gives KLU's pressure below and above it
     CHECK(diff <= 1e-7 * scale);
   }
 }
+
+// method.ppe_pressure_offset adds a constant P0 to the projected pressure. In C&R eq. 11 a constant
+// contributes -dt P0 sum_b m_b (1/rho_a^2 + 1/rho_b^2) grad W_ab: nothing on a uniform lattice with
+// mirror ghosts (the kernel gradients cancel; 1e-12 of the single-neighbour scale allows for
+// round-off), and on a displaced particle a push back towards its lattice site.
+TEST_CASE("isph: a pressure offset leaves a lattice alone and pushes a displaced particle back") {
+  const double dt = 1e-3, p0 = 0.1;
+  auto projected = [&](double offset, double shift) {
+    const Scene scene = box_scene({"initial.velocity=[\"0\", \"0\"]",
+                                   "method.ppe_pressure_offset=" + std::to_string(offset)});
+    Model model = build_model(scene);
+    const StateLayout& L = model.rhs->layout();
+    std::vector<double> y(L.size());
+    model.rhs->initial_state(y.data());
+    y[L.pos(0) + 44] += shift;  // an interior particle (lattice 10 x 10)
+    model.rhs->eval(0.0, y.data(), nullptr);
+    model.projection->begin_step(0.0, y.data());
+    model.projection->project(dt, y.data());
+    return std::vector<double>(y.begin() + L.vel(0), y.begin() + L.vel(0) + 2 * L.n);
+  };
+  const double scale = dt * p0 / 0.1;  // dt P0 / (rho dx): one neighbour's contribution
+  const auto lattice0 = projected(0, 0), lattice1 = projected(p0, 0);
+  double d_lattice = 0;
+  for (std::size_t i = 0; i < lattice0.size(); ++i) d_lattice = std::max(d_lattice, std::abs(lattice1[i] - lattice0[i]));
+  const auto moved0 = projected(0, 0.02), moved1 = projected(p0, 0.02);
+  const double du = moved1[44] - moved0[44];
+  MESSAGE("lattice: max |du| ", d_lattice, "; displaced by +0.2 dx: du_x ", du);
+  CHECK(d_lattice <= 1e-12 * scale);
+  CHECK(du < -1e-3 * scale);  // back towards its site, and not by round-off
+}

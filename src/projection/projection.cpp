@@ -22,7 +22,8 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       centre_positions_(scene.centre_positions),
       exact_operator_(scene.ppe_operator == "exact"),
       difference_divergence_(scene.ppe_divergence == "difference"),
-      zero_min_level_(scene.ppe_pressure_level == "zero_min") {
+      zero_min_level_(scene.ppe_pressure_level == "zero_min"),
+      pressure_offset_(scene.ppe_pressure_offset) {
   if (scene.scheme == "isph-gpps") grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
 }
@@ -97,7 +98,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   const double level = zero_min_level_ ? *std::min_element(solution_.begin(), solution_.end())
                                        : std::accumulate(solution_.begin(), solution_.end(), 0.0) / static_cast<double>(n);
   pressure_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level;
+  for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
   ++stats_.solves;
   stats_.iterations += rep.iterations;
   stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;

@@ -60,6 +60,7 @@ class Projection {
   bool exact_operator_;
   bool difference_divergence_;
   bool zero_min_level_;
+  double pressure_offset_;
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)

@@ -95,6 +95,7 @@ std::string scene_to_toml(const Scene& s) {
     << "ppe_divergence = " << quote(s.ppe_divergence) << "\n"
     << "ppe_pressure_level = " << quote(s.ppe_pressure_level) << "\n"
     << "ppe_pressure_offset = " << num(s.ppe_pressure_offset) << "\n"
+    << "neighbor_storage = " << quote(s.neighbor_storage) << "\n"
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "gpps_spacing = " << num(s.gpps_spacing) << "\n"

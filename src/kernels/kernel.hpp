@@ -78,6 +78,8 @@ class Kernel {
   // W and (dW/dr)/r for n squared distances (r2[i] -> w[i], f[i]; f may alias r2), the shape chosen
   // once outside the loop so that the loop body is one inlined polynomial (the pair-list hot path).
   // Same values as eval(sqrt(r2[i]), ...).
+  // One squared distance, bit-identical to eval_many (the lean pair storage relies on it).
+  void eval_r2(double r2, double& w, double& f) const { eval_many(1, &r2, &w, &f); }
   void eval_many(std::size_t n, const double* r2, double* w, double* f) const {
     switch (shape_) {
       case KernelShapeId::cubic_spline: return eval_many_as<CubicSpline>(n, r2, w, f);

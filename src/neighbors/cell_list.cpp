@@ -50,37 +50,46 @@ void CellList::build(const double* x, const double* y, std::size_t n, double rad
   }
 }
 
+namespace {
+// Exclusive prefix sum of count into start (the compressed-row offsets); returns the total.
+std::size_t row_starts(const std::vector<std::uint32_t>& count, std::vector<std::size_t>& start) {
+  start.resize(count.size());
+  std::size_t total = 0;
+  for (std::size_t a = 0; a < count.size(); ++a) {
+    start[a] = total;
+    total += count[a];
+  }
+  return total;
+}
+}  // namespace
+
 void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, const double* y,
                  std::size_t n_real, PairList& pairs) {
   pairs.n_real = n_real;
   pairs.px = x;
   pairs.py = y;
+  pairs.kernel = nullptr;
   pairs.count.assign(n_real, 0);
-  if (pairs.stride == 0) pairs.stride = 16;
-  for (;;) {
-    pairs.reserve(n_real * pairs.stride);
-    std::size_t overflow = 0;
-#pragma omp parallel for schedule(static) reduction(max : overflow)
-    for (std::size_t a = 0; a < n_real; ++a) {
-      const std::size_t base = a * pairs.stride;
-      std::size_t k = 0;
-      cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double dx, double dy) {
-        if (b == a) return;
-        if (k < pairs.stride) {
-          const double r2 = dx * dx + dy * dy;
-          double w, f;
-          kernel.eval(std::sqrt(r2), w, f);
-          pairs.j[base + k] = b;
-          pairs.w[base + k] = w;
-          pairs.f[base + k] = f;
-        }
-        ++k;
-      });
-      pairs.count[a] = static_cast<std::uint32_t>(std::min(k, pairs.stride));
-      overflow = std::max(overflow, k);
-    }
-    if (overflow <= pairs.stride) return;
-    pairs.stride = overflow + overflow / 4 + 4;  // grow and redo: rare, only when crowding rises
+  // Pass 1: count; pass 2: fill the compressed rows.
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n_real; ++a) {
+    std::uint32_t k = 0;
+    cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) { k += b != a ? 1 : 0; });
+    pairs.count[a] = k;
+  }
+  pairs.reserve(row_starts(pairs.count, pairs.start));
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n_real; ++a) {
+    std::size_t k = pairs.start[a];
+    cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double dx, double dy) {
+      if (b == a) return;
+      double w, f;
+      kernel.eval(std::sqrt(dx * dx + dy * dy), w, f);
+      pairs.j[k] = b;
+      pairs.w[k] = w;
+      pairs.f[k] = f;
+      ++k;
+    });
   }
 }
 
@@ -92,60 +101,94 @@ void build_candidates(const CellList& cells, const double* x, const double* y, s
                       CandidateList& cand) {
   cand.n_real = n_real;
   cand.count.assign(n_real, 0);
-  if (cand.stride == 0) cand.stride = 32;
-  for (;;) {
-    if (cand.j.size() < n_real * cand.stride) cand.j.resize(n_real * cand.stride);
-    std::size_t overflow = 0;
-#pragma omp parallel for schedule(static) reduction(max : overflow)
-    for (std::size_t a = 0; a < n_real; ++a) {
-      const std::size_t base = a * cand.stride;
-      std::size_t k = 0;
-      cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) {
-        if (b == a) return;
-        if (k < cand.stride) cand.j[base + k] = b;
-        ++k;
-      });
-      cand.count[a] = static_cast<std::uint32_t>(std::min(k, cand.stride));
-      overflow = std::max(overflow, k);
-    }
-    if (overflow <= cand.stride) return;
-    cand.stride = overflow + overflow / 4 + 4;
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n_real; ++a) {
+    std::uint32_t k = 0;
+    cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) { k += b != a ? 1 : 0; });
+    cand.count[a] = k;
   }
+  const std::size_t total = row_starts(cand.count, cand.start);
+  if (cand.j.size() < total) PairList::regrow(cand.j, total + total / 16);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n_real; ++a) {
+    std::size_t k = cand.start[a];
+    cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) {
+      if (b != a) cand.j[k++] = b;
+    });
+  }
+}
+
+namespace {
+// Pass 1 of both storages: how many candidates of each particle are inside the support.
+void count_in_support(const CandidateList& cand, double r_max2, const double* x, const double* y,
+                      std::uint32_t* __restrict pcount) {
+  const std::uint32_t* cj = cand.j.data();
+  const std::uint32_t* ccount = cand.count.data();
+  const std::size_t* cstart = cand.start.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < cand.n_real; ++a) {
+    const double xa = x[a], ya = y ? y[a] : 0.0;
+    std::uint32_t k = 0;
+    for (std::size_t c = cstart[a]; c < cstart[a] + ccount[a]; ++c) {
+      const std::uint32_t b = cj[c];
+      const double dx = xa - x[b], dy = y ? ya - y[b] : 0.0;
+      k += dx * dx + dy * dy < r_max2 ? 1 : 0;
+    }
+    pcount[a] = k;
+  }
+}
+}  // namespace
+
+void lean_pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
+                                PairList& pairs) {
+  pairs.n_real = cand.n_real;
+  pairs.px = x;
+  pairs.py = y;
+  pairs.count.resize(cand.n_real);
+  pairs.r2_max = kernel.radius() * kernel.radius();
+  count_in_support(cand, pairs.r2_max, x, y, pairs.count.data());
+  pairs.cand_start = &cand.start;
+  pairs.cand_count = &cand.count;
+  pairs.cand_j = &cand.j;
+  pairs.kernel = &kernel;
 }
 
 void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
                            PairList& pairs) {
-  const std::size_t n_real = cand.n_real, stride = cand.stride;
+  const std::size_t n_real = cand.n_real;
   pairs.n_real = n_real;
-  pairs.stride = stride;
   pairs.px = x;
   pairs.py = y;
-  pairs.count.assign(n_real, 0);
-  pairs.reserve(n_real * stride);
+  pairs.kernel = nullptr;
+  pairs.count.resize(n_real);
   const double r_max2 = kernel.radius() * kernel.radius();
+  count_in_support(cand, r_max2, x, y, pairs.count.data());
+  pairs.reserve(row_starts(pairs.count, pairs.start));
+  const std::uint32_t* cj = cand.j.data();
+  const std::uint32_t* ccount = cand.count.data();
+  const std::size_t* cstart = cand.start.data();
   // Raw pointers: the compiler need not reload the vectors' data after every store.
   std::uint32_t* __restrict pj = pairs.j.data();
   double* __restrict pw = pairs.w.data();
   double* __restrict pf = pairs.f.data();
-  std::uint32_t* __restrict pcount = pairs.count.data();
-  const std::uint32_t* cj = cand.j.data();
-  const std::uint32_t* ccount = cand.count.data();
+  const std::size_t* pstart = pairs.start.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n_real; ++a) {
-    const std::size_t base = a * stride;
+    const std::size_t base = pstart[a];
     std::size_t k = base;
     const double xa = x[a], ya = y ? y[a] : 0.0;
-    // Pass 1: squared distances (kept in f for now), compacted to the pairs inside the support.
-    for (std::size_t c = base; c < base + ccount[a]; ++c) {
+    // Pass 2: squared distances (kept in f for now) of the pairs inside the support, in candidate order.
+    for (std::size_t c = cstart[a]; c < cstart[a] + ccount[a]; ++c) {
       const std::uint32_t b = cj[c];
       const double dx = xa - x[b], dy = y ? ya - y[b] : 0.0;
       const double r2 = dx * dx + dy * dy;
-      pj[k] = b;
-      pf[k] = r2;
-      k += r2 < r_max2 ? 1 : 0;  // branch-free compaction
+      if (r2 < r_max2) {
+        pj[k] = b;
+        pf[k] = r2;
+        ++k;
+      }
     }
-    pcount[a] = static_cast<std::uint32_t>(k - base);
-    // Pass 2: kernel values of the kept pairs.
+    // Pass 3: kernel values of the kept pairs.
     kernel.eval_many(k - base, pf + base, pw + base, pf + base);
   }
 }

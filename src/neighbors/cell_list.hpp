@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernels/kernel.hpp"
+
 namespace arksph {
 
 class CellList {
@@ -44,29 +46,66 @@ class CellList {
 
 // Neighbour pairs of each real particle a (a < n_real) among all points, self excluded, with
 // r_ab = r_a - r_b, the kernel value W_ab and F_ab = (dW/dr)/r, so that grad_a W_ab = F_ab r_ab.
-// Stored with a fixed stride per particle so that it is filled in parallel without atomics. Only the
-// index, W and F are stored (16 + 4 bytes a pair); r_ab is recomputed from the positions the list was
-// built from (px, py, which must outlive the list's use), in the same floating-point operations as
-// when the pair was found, so results do not depend on the storage.
+// Compressed rows: a's pairs are entries start[a] .. start[a] + count[a] - 1, counted in a first pass
+// and filled in parallel in a second (no atomics, no padding: 20 bytes a pair). Only the index, W and
+// F are stored; r_ab is recomputed from the positions the list was built from (px, py, which must
+// outlive the list's use), in the same floating-point operations as when the pair was found, so
+// results do not depend on the storage.
 struct PairList {
-  std::size_t n_real = 0, stride = 0;
+  std::size_t n_real = 0;
+  std::vector<std::size_t> start;    // first entry of a
   std::vector<std::uint32_t> count;  // neighbours of a
-  std::vector<std::uint32_t> j;      // index b of the k-th neighbour of a: j[a * stride + k]
+  std::vector<std::uint32_t> j;      // index b of the k-th neighbour of a: j[start[a] + k]
   std::vector<double> w, f;
   const double* px = nullptr;  // positions of all points (py null in 1D)
   const double* py = nullptr;
-  // Grows the per-pair arrays to hold cap entries (never shrinks: no allocation in steady state).
+  std::size_t total() const {
+    std::size_t s = 0;
+    for (std::size_t a = 0; a < n_real; ++a) s += count[a];
+    return s;
+  }
+  // Makes room for cap entries (contents are not kept: the caller refills them). Never shrinks, so
+  // no allocation in steady state; grows by 1/16 at a time, each array freed before its new one is
+  // made (vector::resize would double the capacity and hold both blocks at once).
   void reserve(std::size_t cap) {
     if (j.size() >= cap) return;
-    j.resize(cap);
-    w.resize(cap);
-    f.resize(cap);
+    cap += cap / 16;
+    regrow(j, cap);
+    regrow(w, cap);
+    regrow(f, cap);
   }
+  template <class T>
+  static void regrow(std::vector<T>& v, std::size_t cap) {
+    std::vector<T>().swap(v);
+    v.resize(cap);
+  }
+  // Lean storage (method.neighbor_storage = "candidates"): no per-pair arrays; for_pairs walks the
+  // Verlet candidates, skips those outside the support and evaluates the kernel on the fly (same
+  // values, same order as the stored list; slower, about 20 bytes a pair less).
+  const std::vector<std::size_t>* cand_start = nullptr;
+  const std::vector<std::uint32_t>* cand_count = nullptr;
+  const std::vector<std::uint32_t>* cand_j = nullptr;
+  const Kernel* kernel = nullptr;
+  double r2_max = 0;
   // body(b, rx, ry, r2, W_ab, F_ab) for every neighbour b of a.
   template <class Body>
   void for_pairs(std::size_t a, Body&& body) const {
-    const std::size_t base = a * stride, end = base + count[a];
     const double xa = px[a], ya = py ? py[a] : 0.0;
+    if (kernel) {
+      const std::size_t cbase = (*cand_start)[a], cend = cbase + (*cand_count)[a];
+      const std::uint32_t* cj = cand_j->data();
+      for (std::size_t c = cbase; c < cend; ++c) {
+        const std::uint32_t b = cj[c];
+        const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
+        const double r2 = rx * rx + ry * ry;
+        if (!(r2 < r2_max)) continue;
+        double w = 0, f = 0;
+        kernel->eval_r2(r2, w, f);
+        body(b, rx, ry, r2, w, f);
+      }
+      return;
+    }
+    const std::size_t base = start[a], end = base + count[a];
     for (std::size_t k = base; k < end; ++k) {
       const std::uint32_t b = j[k];
       const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
@@ -75,7 +114,6 @@ struct PairList {
   }
 };
 
-class Kernel;
 // Fills `pairs` for real particles 0..n_real-1 against all n_all points. Returns the largest count.
 void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, const double* y,
                  std::size_t n_real, PairList& pairs);
@@ -87,8 +125,10 @@ namespace arksph {
 // Verlet candidates: for each real particle, the points within radius + skin at the last rebuild.
 // While no particle has moved more than skin / 2 since then, every pair closer than the radius is
 // among the candidates, so the pair list is refreshed from them without a cell search.
+// Compressed rows as in PairList: a's candidates are j[start[a] .. start[a] + count[a] - 1].
 struct CandidateList {
-  std::size_t n_real = 0, stride = 0;
+  std::size_t n_real = 0;
+  std::vector<std::size_t> start;
   std::vector<std::uint32_t> count, j;
 };
 
@@ -98,5 +138,9 @@ void build_candidates(const CellList& cells, const double* x, const double* y, s
 // The pairs among the candidates closer than the kernel radius, with kernel values (as build_pairs).
 void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
                            PairList& pairs);
+// The same neighbours without per-pair storage: only the counts; for_pairs then reads the candidates
+// (which must outlive the list's use) and evaluates the kernel.
+void lean_pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
+                                PairList& pairs);
 
 }  // namespace arksph

@@ -56,7 +56,7 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
   sys.b[0] = 0.0;
   // Matrix: per row, accumulate the off-diagonal coefficients by source column.
   std::vector<Eigen::Triplet<double, int>> trip;
-  trip.reserve(f.pairs.count.empty() ? n : n * (f.pairs.stride / 2 + 1));
+  trip.reserve(n + f.pairs.total());
   for (std::size_t a = 0; a < n; ++a) {
     const double va = f.m[a] / f.rho[a];
     double diag = 0;

@@ -18,7 +18,8 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       kernel_(std::move(kernel)),
       terms_(std::move(terms)),
       ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
-      nu_(scene.viscosity) {
+      nu_(scene.viscosity),
+      lean_pairs_(scene.neighbor_storage == "candidates") {
   // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
   skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
@@ -176,7 +177,10 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
     if (two_d) ref_y_.assign(f.y.begin(), f.y.begin() + n);
     ++rebuilds_;
   }
-  pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
+  if (lean_pairs_)
+    lean_pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
+  else
+    pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
   timing_.neighbors += seconds_since(t0);
 
   t0 = clock::now();

@@ -65,6 +65,7 @@ class RhsEvaluator {
   long rebuilds_ = 0;
   FluidFields fields_;
   double nu_;
+  bool lean_pairs_;  // method.neighbor_storage = "candidates": no per-pair kernel values stored
   bool periodic_[2] = {false, false};
   double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;

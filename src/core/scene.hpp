@@ -87,6 +87,9 @@ struct Scene {
   double cfl = 0.25;      // coefficient of Szewc eqs. 34-35
   double rtol = 1e-2, atol = 1e-4;  // adaptive mode only: loose, so that the stability limits govern
   long max_steps = 100000000;
+  bool imex = false;                     // ARKStep IMEX: viscous term implicit (Newton, KLU), the rest explicit
+  std::string imex_pair = "ARK324L2SA";  // time.imex: ARKODE additive pair (arksph list: imex_pair)
+  bool imex_linear = false;              // time.imex: true: ARKStepSetLinear, J re-probed at every stage, one Newton iteration
 
   // [output]
   std::string directory = "runs/unnamed";

@@ -80,6 +80,9 @@ cfl = 0.25                     # coefficient of the stability limits, Szewc eqs.
 rtol = 1e-2                    # relative tolerance (adaptive mode only, > 0; loose: the stability limits govern)
 atol = 1e-4                    # absolute tolerance (adaptive mode only, > 0)
 max_steps = 100000000          # abort after this many steps (>= 1)
+imex = false                   # true: ARKStep IMEX, viscous term implicit (Newton + KLU), no viscous step limit (wcsph)
+imex_pair = "ARK324L2SA"       # imex: ARKODE additive pair ARK324L2SA | ARK436L2SA | ARK437L2SA | ARK548L2SA | ARK548L2SAb
+imex_linear = false            # imex: true: ARKStepSetLinear, exact J at every stage, one Newton iteration (slow); false: Newton, J reused
 
 [output]
 directory = "runs/default"     # output folder (--out overrides; default runs/<scene.name>)

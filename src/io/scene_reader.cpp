@@ -300,7 +300,8 @@ void read_method(const Section& root, Scene& s) {
 }
 
 void read_time_output(const Section& root, Scene& s) {
-  const Section t = root.section("time", {"end", "integrator", "dt", "cfl", "rtol", "atol", "max_steps"});
+  const Section t = root.section("time", {"end", "integrator", "dt", "cfl", "rtol", "atol", "max_steps", "imex",
+                                            "imex_pair", "imex_linear"});
   s.end = t.number("end", std::nullopt);  // final simulated time
   t.require(s.end > 0, "end", "> 0", s.end);
   s.integrator = t.registered("integrator", "erk_table", s.integrator);  // ARKODE table name
@@ -314,6 +315,12 @@ void read_time_output(const Section& root, Scene& s) {
   t.require(s.atol > 0, "atol", "> 0", s.atol);
   s.max_steps = t.integer("max_steps", s.max_steps);
   t.require(s.max_steps >= 1, "max_steps", ">= 1", static_cast<double>(s.max_steps));
+  // IMEX: ARKStep with the viscous term implicit (app README "Stiff viscosity"); time.integrator is
+  // then unused, the pair names both tables
+  s.imex = t.boolean("imex", s.imex);
+  s.imex_pair = t.registered("imex_pair", "imex_pair", s.imex_pair);
+  s.imex_linear = t.boolean("imex_linear", s.imex_linear);
+  if (s.imex && s.scheme != "wcsph") t.fail("imex", "needs method.scheme = \"wcsph\" (got \"" + s.scheme + "\")");
 
   const Section o = root.section("output", {"directory", "every", "checkpoint_every"});
   s.directory = o.string("directory", "runs/" + s.name);

@@ -110,7 +110,10 @@ std::string scene_to_toml(const Scene& s) {
     << "cfl = " << num(s.cfl) << "\n"
     << "rtol = " << num(s.rtol) << "\n"
     << "atol = " << num(s.atol) << "\n"
-    << "max_steps = " << s.max_steps << "\n\n";
+    << "max_steps = " << s.max_steps << "\n"
+    << "imex = " << boolean(s.imex) << "\n"
+    << "imex_pair = " << quote(s.imex_pair) << "\n"
+    << "imex_linear = " << boolean(s.imex_linear) << "\n\n";
   o << "[output]\n"
     << "directory = " << quote(s.directory) << "\n"
     << "every = " << num(s.every) << "\n"

@@ -41,6 +41,7 @@ Model build_model(const Scene& scene) {
   if (walls && scene.wall_velocity == "linear" && scene.dimension == 2) model.terms.push_back("walls:linear_velocity");
   if (walls && scene.wall_velocity == "quadratic" && scene.dimension == 2)
     model.terms.push_back("walls:quadratic_velocity");
+  if (walls && scene.wall_particles && scene.dimension == 2) model.terms.push_back("walls:wall_particles");
   if (periodic) model.terms.push_back("periodic:images");
   model.terms.push_back("kernel:" + scene.kernel);
   if (scene.imex) {  // the viscous term implicit: ARKStep IMEX, Newton with KLU on M = I - gamma J

@@ -36,6 +36,7 @@ struct Scene {
   std::array<SideSpec, 4> sides{};
   double corner_alpha = 0.0;          // Szewc et al. 2012 eq. 46, range [-1, 1]
   bool free_slip_divergence = false;  // Szewc §6: free-slip images for the velocity divergence only
+  bool wall_particles = false;  // Basa et al. 2008 §6.1.2: particles on the wall carrying its velocity (2D)
   std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear" | "quadratic"
 
   // [fluid]

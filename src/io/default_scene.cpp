@@ -27,6 +27,7 @@ top    = { kind = "wall", velocity = [1.0, 0.0], slip = "no_slip" }   # the movi
 corner_alpha = 0.0             # corner ghost weighting, Szewc et al. 2012 eq. 46, in [-1, 1]
 free_slip_divergence = true    # free-slip images for the velocity divergence only (Szewc §6; needed at the lid corners)
 wall_velocity = "mirror"       # no-slip ghosts: "mirror" (2w - u) | "linear" (near-wall shear extrapolated, Basa §6.1.2) | "quadratic" (two rows)
+wall_particles = false         # true: particles on the no-slip walls with the wall velocity, one per fluid particle within dx (Basa §6.1.2)
 
 [fluid]
 spacing = 0.03333333333333333  # initial lattice spacing dx = 1/30 (must divide each domain length)

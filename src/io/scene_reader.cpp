@@ -142,7 +142,8 @@ void read_scene_domain(const Section& root, Scene& s) {
 
 void read_boundary(const Section& root, Scene& s) {
   const Section b = root.section(
-      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence", "wall_velocity"});
+      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence", "wall_velocity",
+                                            "wall_particles"});
   const std::size_t dim = s.dimension;
   for (int i = 0; i < 4; ++i) {
     if (i >= 2 && dim == 1) {
@@ -178,6 +179,9 @@ void read_boundary(const Section& root, Scene& s) {
   // wall_velocity: tangential velocity of no-slip ghosts (Basa et al. 2008 §6.1.2): "mirror" (2w - u of
   // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall)
   s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear", "quadratic"}, s.wall_velocity);
+  // wall_particles: add particles on the no-slip walls carrying the wall velocity, one per fluid
+  // particle closer than dx (Basa et al. 2008 §6.1.2), with any wall_velocity rule; 2D
+  s.wall_particles = b.boolean("wall_particles", s.wall_particles);
   bool any_wall = false;
   for (std::size_t i = 0; i < 2 * dim; ++i) any_wall |= s.sides[i].kind == SideKind::wall;
   if (s.free_slip_divergence && !any_wall)

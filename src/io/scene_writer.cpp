@@ -62,7 +62,8 @@ std::string scene_to_toml(const Scene& s) {
   }
   o << "corner_alpha = " << num(s.corner_alpha) << "\n"
     << "free_slip_divergence = " << boolean(s.free_slip_divergence) << "\n"
-    << "wall_velocity = " << quote(s.wall_velocity) << "\n\n";
+    << "wall_velocity = " << quote(s.wall_velocity) << "\n"
+    << "wall_particles = " << boolean(s.wall_particles) << "\n\n";
   o << "[fluid]\n"
     << "spacing = " << num(s.spacing) << "\n"
     << "density = " << num(s.density) << "\n"

@@ -8,6 +8,7 @@
 
 #include "app/setup.hpp"
 #include "app/simulation.hpp"
+#include "core/errors.hpp"
 #include "integrate/viscous_split.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_reader.hpp"
@@ -152,4 +153,20 @@ TEST_CASE("imex: at 10x the explicit viscous step limit, IMEX Poiseuille (Re = 0
   CHECK(eps <= 0.02);
   CHECK(eps_max <= 0.02);
   CHECK(summary_metric(imex_dir, "poiseuille_tstar") == doctest::Approx(2.0).epsilon(1e-9));
+}
+
+TEST_CASE("imex: scene keys are checked (wcsph only, registered pairs) and the run records its terms") {
+  std::ostringstream warnings;
+  const std::string base = testing::kTaylorGreenBox + "[time]\nend = 0.01\n";
+  const Scene s = read_scene_text(base, "tg", {"time.imex=true", "time.imex_pair=ARK548L2SA"}, warnings);
+  CHECK(s.imex);
+  CHECK(s.imex_pair == "ARK548L2SA");
+  CHECK_FALSE(s.imex_linear);
+  CHECK(read_scene_text(s.resolved_toml, "resolved", {}, warnings).imex_pair == "ARK548L2SA");  // round trip
+  CHECK_THROWS_AS(read_scene_text(base, "tg", {"time.imex=true", "method.scheme=isph"}, warnings), InputError);
+  CHECK_THROWS_AS(read_scene_text(base, "tg", {"time.imex_pair=ARK999"}, warnings), InputError);
+  const Model m = build_model(s);
+  CHECK(std::find(m.terms.begin(), m.terms.end(), "integrator:arkstep_imex:ARK548L2SA") != m.terms.end());
+  CHECK(imex_pair_order("ARK548L2SA") == 5);
+  CHECK(imex_pair_order("ARK324L2SA") == 3);
 }

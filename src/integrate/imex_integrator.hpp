@@ -49,7 +49,6 @@ struct ImexOptions {
   StabilityFunction stability;  // adaptive mode: h <= stability(t, y) (explicit part's limits)
   double initial_dt = 0;
   bool linear = true;  // f_I linear at frozen positions: ARKStepSetLinear, one Newton iteration per stage
-  bool fsal_workaround = true;  // see the constructor: the 6.4.1 FSAL bug affects ARKStep as well
 };
 
 // The ARK pairs of ARKODE 6.4 by short name ("ARK324L2SA", ...), their orders and table names.

@@ -37,7 +37,7 @@ class ViscousSplit {
   bool valid_ = false;
   std::vector<double> jac_y_;    // the state J was probed at (frozen rows matter)
   const SparseCsr* jac_last_ = nullptr;
-  std::vector<double> u_, v_, au_, av_;
+  std::vector<double> au_, av_;
 };
 
 }  // namespace arksph

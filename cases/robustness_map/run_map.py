@@ -13,6 +13,9 @@ OUT/eps_re0.5.csv. OUT/robustness.png and OUT/eps_re0.5.png are drawn from the C
   run_map.py --reduced            # Re = 0.1, 0.5, 1, 3, 10; 6,000 steps at most
   run_map.py                      # full: 9 Re from 0.1 to 10^4 (log-spaced) plus 0.5; 500,000 steps
   run_map.py --plot-only OUT      # redraw the figures
+  run_map.py --figures OUT        # Fig. 4 (near-wall start-up profiles per wall option, with and
+                                  # without particles on the wall) and Fig. 2 (pressure reduction
+                                  # off / on), runs and PNGs in OUT/fig4, OUT/fig2
 """
 import argparse
 import concurrent.futures as cf
@@ -172,6 +175,117 @@ def plot(out_dir):
     plt.close(fig)
 
 
+WALL_OPTIONS = [(wv, wp) for wp in ("false", "true") for wv in ("mirror", "linear", "quadratic")]
+FIG4 = dict(re=0.5, tstar=0.1, letter="B", model="two_pass", corr="bonet_lok", eos="ideal_gas")
+FIG2 = dict(re=0.3, tstar=TSTAR_STEADY, letter="E", model="morris", corr="none", eos="ideal_gas")
+
+
+def run_case(binary, run_dir, re, tstar, model, corr, eos, extra, max_steps=500000):
+    """One start-up run of scene.toml; returns (exit code, [(t*, eps)], profile rows (y, u, u_exact))."""
+    u0 = re * NU / D
+    shutil.rmtree(run_dir, ignore_errors=True)
+    sets = {"fluid.body_force": f"[{2 * NU * u0 / D ** 2!r},0]", "method.sound_speed": repr(10 * u0),
+            "method.viscosity_model": model, "method.kernel_correction": corr, "method.equation_of_state": eos,
+            "time.end": repr(tstar_to_t(tstar)), "time.max_steps": str(max_steps)}
+    sets.update(extra)
+    if tstar < 1:
+        sets["output.every"] = repr(tstar_to_t(tstar) / 10)
+    cmd = [binary, "run", os.path.join(HERE, "scene.toml"), "--out", run_dir, "--quiet"]
+    for k, v in sets.items():
+        cmd += ["--set", f"{k}={v}"]
+    proc = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                          env=dict(os.environ, OMP_NUM_THREADS="1"))
+    series, profile = [], []
+    ts_path, pr_path = os.path.join(run_dir, "timeseries.csv"), os.path.join(run_dir, "poiseuille_profile.csv")
+    if os.path.exists(ts_path):
+        for row in csv.DictReader(open(ts_path)):
+            try:
+                series.append((float(row["tstar"]), float(row["poiseuille_eps"])))
+            except (KeyError, ValueError):
+                pass
+    if os.path.exists(pr_path):
+        profile = [(float(r["y"]), float(r["u_sph"]), float(r["u_exact"])) for r in csv.DictReader(open(pr_path))]
+    for name in os.listdir(run_dir) if os.path.isdir(run_dir) else []:
+        if name.endswith(".vtp") or name.endswith(".h5") or name.endswith(".pvd"):
+            os.remove(os.path.join(run_dir, name))
+    return proc.returncode, series, profile
+
+
+def figures(binary, out_dir, jobs):
+    """Basa Fig. 4 (near-wall profiles at t* = 0.1 per wall option, model B with first-order
+    correction, compressible) and Fig. 2 (model E, compressible, Re = 0.3, pressure reduction off/on)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    f4, f2 = os.path.join(out_dir, "fig4"), os.path.join(out_dir, "fig2")
+    os.makedirs(f4, exist_ok=True)
+    os.makedirs(f2, exist_ok=True)
+    jobs4 = {(wv, wp): (os.path.join(f4, f"{wv}_particles-{wp}"), FIG4["re"], FIG4["tstar"], FIG4["model"], FIG4["corr"],
+                        FIG4["eos"], {"boundary.wall_velocity": wv, "boundary.wall_particles": wp})
+             for wv, wp in WALL_OPTIONS}
+    jobs2 = {pr: (os.path.join(f2, f"pressure_reduction-{pr}"), FIG2["re"], FIG2["tstar"], FIG2["model"], FIG2["corr"],
+                  FIG2["eos"], {"method.pressure_reduction": pr}) for pr in ("false", "true")}
+    with cf.ThreadPoolExecutor(max_workers=jobs) as pool:
+        r4 = {k: pool.submit(run_case, binary, *v) for k, v in jobs4.items()}
+        r2 = {k: pool.submit(run_case, binary, *v) for k, v in jobs2.items()}
+        r4 = {k: f.result() for k, f in r4.items()}
+        r2 = {k: f.result() for k, f in r2.items()}
+    with open(os.path.join(f4, "fig4_eps.csv"), "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["wall_velocity", "wall_particles", "exit", "tstar", "eps"])
+        for (wv, wp), (code, series, _) in r4.items():
+            w.writerow([wv, wp, code, series[-1][0] if series else "", series[-1][1] if series else ""])
+    fig, ax = plt.subplots(figsize=(7, 5))
+    exact_done = False
+    for (wv, wp), (code, series, prof) in r4.items():
+        near = sorted((yy, u, ue) for yy, u, ue in prof if yy < 0.2)
+        if not near:
+            continue
+        ys = sorted(set(round(p[0], 6) for p in near))
+        mean = [sum(p[1] for p in near if round(p[0], 6) == yv) / sum(1 for p in near if round(p[0], 6) == yv) for yv in ys]
+        ax.plot(mean, ys, "o-" if wp == "false" else "s--", ms=4,
+                label=f"{wv}{' + wall particles' if wp == 'true' else ''} (eps {series[-1][1]:.3f})")
+        if not exact_done:
+            ex = sorted(set((round(p[0], 6), p[2]) for p in near))
+            ax.plot([e for _, e in ex], [yv for yv, _ in ex], "k-", lw=2, label="series (Basa eq. 36)")
+            exact_done = True
+    ax.set_xlabel("u (row mean)")
+    ax.set_ylabel("y (wall at 0)")
+    ax.set_title(f"Near-wall start-up profile, t* = {FIG4['tstar']}, Re = {FIG4['re']}, model B + Bonet-Lok, ideal gas")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(f4, "fig4_near_wall.png"), dpi=110)
+    plt.close(fig)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for pr, (code, series, prof) in r2.items():
+        axes[0].plot([t for t, _ in series], [e for _, e in series],
+                     label=f"pressure reduction {pr} (exit {code})")
+        ys = sorted(set(round(p[0], 6) for p in prof))
+        mean = [sum(p[1] for p in prof if round(p[0], 6) == yv) / sum(1 for p in prof if round(p[0], 6) == yv) for yv in ys]
+        axes[1].plot(mean, ys, label=f"pressure reduction {pr}, t* = {series[-1][0] if series else 0:.3g}")
+        if pr == "true":
+            ex = sorted(set((round(p[0], 6), p[2]) for p in prof))
+            axes[1].plot([e for _, e in ex], [yv for yv, _ in ex], "k:", label="series")
+    axes[0].set_yscale("log")
+    axes[0].axhline(EPS_FAIL, color="grey", lw=0.5)
+    axes[0].set_xlabel("t*")
+    axes[0].set_ylabel("eps (Basa eq. 38)")
+    axes[0].legend(fontsize=7)
+    axes[1].set_xlabel("u (row mean) at the last output")
+    axes[1].set_ylabel("y")
+    axes[1].legend(fontsize=7)
+    fig.suptitle(f"Re = {FIG2['re']}, model E, ideal gas, no correction: pressure reduction off / on (Basa Fig. 2)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(f2, "fig2_pressure_reduction.png"), dpi=110)
+    plt.close(fig)
+    with open(os.path.join(f2, "fig2_eps.csv"), "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["pressure_reduction", "exit", "tstar", "eps"])
+        for pr, (code, series, _) in r2.items():
+            for t, e in series:
+                w.writerow([pr, code, t, e])
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--reduced", action="store_true", help="5 Re values (0.1 to 10), 6,000 steps at most")
@@ -181,7 +295,11 @@ def main():
     ap.add_argument("--max-steps", type=int, default=None)
     ap.add_argument("--re", type=float, nargs="*", default=None, help="Reynolds numbers (override)")
     ap.add_argument("--plot-only", metavar="OUT", default=None)
+    ap.add_argument("--figures", metavar="OUT", default=None, help="Fig. 4 and Fig. 2 runs and plots into OUT")
     a = ap.parse_args()
+    if a.figures:
+        figures(a.binary, a.figures, a.jobs)
+        return 0
     if a.plot_only:
         plot(a.plot_only)
         return 0

@@ -103,7 +103,7 @@ double Checkpointer::limit(double t_stop) {
   return stop_;
 }
 
-void Checkpointer::at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {
+void Checkpointer::at(double t, TimeIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {
   if (!due(t)) return;
   while (due(t)) ++next_;
   const double h = integrator.next_step();
@@ -113,12 +113,12 @@ void Checkpointer::at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, lo
   if (model_.projection) model_.projection->forget_warm_start();  // a restart starts the solvers cold
 }
 
-void Checkpointer::at_end(double t, ErkIntegrator& integrator, long frames, long reflections) {
+void Checkpointer::at_end(double t, TimeIntegrator& integrator, long frames, long reflections) {
   if (last_written_ == t) return;
   write(t, integrator, frames, reflections);
 }
 
-std::string Checkpointer::write(double t, ErkIntegrator& integrator, long frames, long reflections) {
+std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frames, long reflections) {
   const StateLayout& L = model_.rhs->layout();
   Checkpoint c;
   c.dimension = L.dim;

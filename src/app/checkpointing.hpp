@@ -44,18 +44,18 @@ class Checkpointer {
   // Index of the next output frame (frame * output.every) at the start of the run.
   int first_frame() const;
   std::string path() const { return path_; }
-  // The integrator counters of the checkpointed run (ErkIntegrator::set_counter_offset).
+  // The integrator counters of the checkpointed run (TimeIntegrator::set_counter_offset).
   ErkStats counters() const;
 
   // The stop time for the next step: t_stop, or the next scheduled checkpoint if that comes first.
   double limit(double t_stop);
   // Writes the scheduled checkpoint if t has reached it; then re-initialises the integrator and the
   // neighbour list (see above). `frames` = output frames written so far.
-  void at(double t, ErkIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections);
+  void at(double t, TimeIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections);
   // The final checkpoint (skipped if the scheduled one was just written at t).
-  void at_end(double t, ErkIntegrator& integrator, long frames, long reflections);
+  void at_end(double t, TimeIntegrator& integrator, long frames, long reflections);
   // Unconditional write at (t, state) (interrupt). Returns the path.
-  std::string write(double t, ErkIntegrator& integrator, long frames, long reflections);
+  std::string write(double t, TimeIntegrator& integrator, long frames, long reflections);
 
  private:
   bool due(double t) const;

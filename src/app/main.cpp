@@ -10,6 +10,7 @@
 #include "app/interrupt.hpp"
 #include "app/simulation.hpp"
 #include "app/study_commands.hpp"
+#include "integrate/imex_integrator.hpp"
 #include "core/errors.hpp"
 #include "core/names.hpp"
 #include "integrate/erk_integrator.hpp"
@@ -52,7 +53,8 @@ std::string toml_quote(const std::string& s) {
 
 int cmd_list() {
   const char* families[] = {"scheme", "kernel", "viscosity_model", "pressure_gradient", "density_mode",
-                            "kernel_correction", "equation_of_state", "density_correction", "ppe_solver", "erk_table"};
+                            "kernel_correction", "equation_of_state", "density_correction", "ppe_solver", "erk_table",
+                            "imex_pair"};
   for (const char* fam : families) {
     std::printf("%s:\n", fam);
     for (const auto& n : arksph::registered_names(fam)) {
@@ -60,6 +62,9 @@ int cmd_list() {
         std::printf("  %-32s order %d%s%s\n", n.c_str(), arksph::erk_table_order(n),
                     arksph::erk_table_has_embedding(n) ? ", adaptive or fixed" : ", fixed step only",
                     arksph::erk_table_has_fsal_bug(n) ? " (SUNDIALS 6.4.1 FSAL bug: worked around, +1 RHS/step)" : "");
+      } else if (std::string(fam) == "imex_pair") {
+        std::printf("  %-32s order %d, %s + %s (time.imex: viscosity implicit)\n", n.c_str(), arksph::imex_pair_order(n),
+                    arksph::imex_pair_dirk_table(n).c_str(), arksph::imex_pair_erk_table(n).c_str());
       } else {
         std::printf("  %s\n", n.c_str());
       }

@@ -158,6 +158,14 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   if (result.exit_code != 0) j.set("failure", result.message);
   j.set("frames", frames_);
   j.set("terms", Json(model_.terms));
+  if (scene_.imex) {  // ARKStep IMEX counters (time.imex)
+    Json im = Json::object();
+    im.set("pair", scene_.imex_pair).set("implicit_rhs_evals", stats.implicit_rhs_evals);
+    im.set("newton_iterations", stats.newton_iters).set("newton_failures", stats.newton_fails);
+    im.set("linear_setups", stats.linear_setups).set("jacobian_evals", stats.jacobian_evals);
+    im.set("klu_symbolic_analyses", stats.symbolic_analyses);
+    j.set("imex", im);
+  }
   Json timing = Json::object();
   const double ppe = model_.projection ? model_.projection->stats().seconds : 0.0;
   timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);

@@ -41,9 +41,15 @@ Model build_model(const Scene& scene) {
   if (walls && scene.wall_velocity == "linear" && scene.dimension == 2) model.terms.push_back("walls:linear_velocity");
   if (walls && scene.wall_velocity == "quadratic" && scene.dimension == 2)
     model.terms.push_back("walls:quadratic_velocity");
+  if (walls && scene.wall_particles && scene.dimension == 2) model.terms.push_back("walls:wall_particles");
   if (periodic) model.terms.push_back("periodic:images");
   model.terms.push_back("kernel:" + scene.kernel);
-  model.terms.push_back("integrator:erkstep:" + scene.integrator);
+  if (scene.imex) {  // the viscous term implicit: ARKStep IMEX, Newton with KLU on M = I - gamma J
+    model.terms.push_back("integrator:arkstep_imex:" + scene.imex_pair);
+    model.terms.push_back(scene.imex_linear ? "imex:viscosity_implicit+klu+linear" : "imex:viscosity_implicit+klu");
+  } else {
+    model.terms.push_back("integrator:erkstep:" + scene.integrator);
+  }
   model.rhs = std::make_unique<RhsEvaluator>(scene, model.particles, std::move(kernel), std::move(terms));
   if (scene.scheme == "isph" || scene.scheme == "isph-gpps") {
     model.projection = std::make_unique<Projection>(scene, *model.rhs);
@@ -69,7 +75,7 @@ double stable_step(const Scene& scene, const Model& model, double max_speed, dou
   double dt = std::numeric_limits<double>::infinity();
   const double signal = model.sound_speed + speed;  // eq. 35 (eq. 34 when c = 0)
   if (signal > 0) dt = std::min(dt, scene.cfl * h / signal);
-  if (scene.viscosity > 0) dt = std::min(dt, 0.125 * h * h / scene.viscosity);  // eq. 36
+  if (scene.viscosity > 0 && !scene.imex) dt = std::min(dt, 0.125 * h * h / scene.viscosity);  // eq. 36 (explicit only)
   if (max_accel > 0) dt = std::min(dt, 0.25 * std::sqrt(h / max_accel));        // eq. 37
   if (!std::isfinite(dt)) dt = scene.end;
   return dt;
@@ -82,7 +88,7 @@ ErkOptions integrator_options(const Scene& scene) {
   o.rtol = scene.rtol;
   o.atol = scene.atol;
   o.max_steps = scene.max_steps;
-  if (scene.dt == 0 && !erk_table_has_embedding(scene.integrator))
+  if (scene.dt == 0 && !scene.imex && !erk_table_has_embedding(scene.integrator))
     throw InputError(scene.source + ": time.dt: table " + scene.integrator +
                      " has no embedding, so it needs a fixed step (time.dt > 0)");
   return o;

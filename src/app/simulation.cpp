@@ -17,6 +17,7 @@
 #include "app/run_output.hpp"
 #include "app/setup.hpp"
 #include "app/state_check.hpp"
+#include "app/time_stepper.hpp"
 #include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
 #include "diagnostics/flow_metrics.hpp"
@@ -39,7 +40,8 @@ void print_run_header(const Scene& scene, const Model& model) {
   std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s\n", scene.scheme.c_str(),
               model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str());
   if (model.sound_speed > 0) std::printf("  sound speed %.6g\n", model.sound_speed);
-  std::printf("  integrator %s, %s, end time %g\n", scene.integrator.c_str(),
+  const std::string method = scene.imex ? "ARKStep IMEX " + scene.imex_pair + " (viscosity implicit)" : scene.integrator;
+  std::printf("  integrator %s, %s, end time %g\n", method.c_str(),
               scene.dt > 0 ? ("fixed dt " + std::to_string(scene.dt)).c_str() : "adaptive dt (stability limited)",
               scene.end);
   std::printf("  terms:");
@@ -86,8 +88,8 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     rhs.invalidate_neighbors();
   }
   const long diag_evals_before = rhs.evaluations();
-  ErkIntegrator integrator([&](double t, const double* y, double* ydot) { rhs.eval(t, y, ydot); }, y0,
-                           checkpoints.start_time(), eo);
+  TimeStepper stepper = make_time_stepper(scene, rhs, eo, y0, checkpoints.start_time());
+  TimeIntegrator& integrator = *stepper.integrator;
   integrator.set_counter_offset(checkpoints.counters());
   if (integrator.workaround_installed()) out.add_term("erkstep:fsal_bug_workaround");
 

@@ -31,7 +31,9 @@ GhostBuilder::GhostBuilder(const Scene& scene, double support_radius)
       free_slip_div_(scene.free_slip_divergence),
       lo_(scene.min),
       hi_(scene.max),
-      sides_(scene.sides) {
+      sides_(scene.sides),
+      wall_particles_(scene.wall_particles && scene.dimension == 2),
+      dx_(scene.spacing) {
   for (int k = 0; k < dim_; ++k) len_[k] = hi_[k] - lo_[k];
   any_side_ = true;
   for (int s = 0; s < 2 * dim_; ++s)
@@ -105,6 +107,42 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
         g.wall_side.push_back(static_cast<std::int8_t>(one_wall ? w.side : -1));
         g.wall_dist.push_back(one_wall ? std::abs(p[w.side / 2] - (w.side % 2 ? hi_[w.side / 2] : lo_[w.side / 2])) : 0.0);
       }
+    }
+    if (wall_particles_) add_wall_particles(i, p, reach, g);
+  }
+}
+
+// Basa et al. 2008 §6.1.2, "particles on the wall": for a fluid particle closer than dx to a no-slip
+// wall, a particle at the nearest point of the wall carrying the wall velocity (map u' = w, no
+// dependence on the source), plus its periodic images along the wall. Mass, density and pressure are
+// the source's, as for every ghost. Not a mirror image: wall_side = -1, so the wall-velocity
+// extrapolations leave it alone.
+void GhostBuilder::add_wall_particles(std::size_t i, const double p[2], double reach, GhostSet& g) const {
+  for (int side = 0; side < 4; ++side) {
+    const SideSpec& s = sides_[side];
+    if (s.kind != SideKind::wall || s.slip != SlipKind::no_slip) continue;
+    const int k = side / 2, t = 1 - k;
+    const double plane = side % 2 ? hi_[k] : lo_[k];
+    if (std::abs(p[k] - plane) >= dx_) continue;
+    double shifts[3] = {0.0, 0.0, 0.0};
+    int nshift = 1;
+    if (sides_[2 * t].kind == SideKind::periodic) {  // images across the periodic tangential sides
+      if (p[t] - lo_[t] < reach) shifts[nshift++] = len_[t];
+      if (hi_[t] - p[t] < reach) shifts[nshift++] = -len_[t];
+    }
+    for (int j = 0; j < nshift; ++j) {
+      std::array<double, 4> place{};
+      place[k] = 0.0, place[2 + k] = plane;    // normal coordinate: on the wall
+      place[t] = 1.0, place[2 + t] = shifts[j];  // tangential: the source's (shifted)
+      g.source.push_back(static_cast<std::uint32_t>(i));
+      g.x.push_back(place[0] * p[0] + place[2]);
+      g.y.push_back(place[1] * p[1] + place[3]);
+      const Map m{0, 0, s.velocity[0], s.velocity[1]};
+      g.map.push_back(m);
+      g.div_map.push_back(m);
+      g.place.push_back(place);
+      g.wall_side.push_back(-1);
+      g.wall_dist.push_back(0.0);
     }
   }
 }

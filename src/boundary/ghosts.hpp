@@ -12,6 +12,9 @@
 //
 // Each ghost's velocity is an affine map of its source's: u'_k = s_k u_k + b_k, one map for the
 // viscous terms and one for the velocity divergence (free-slip option of Szewc §6).
+// With boundary.wall_particles (Basa et al. 2008 §6.1.2) particles on the wall itself are added:
+// one at the nearest wall point of each fluid particle closer than dx to a no-slip wall, with the
+// wall velocity (s = 0, b = w).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -72,6 +75,9 @@ class GhostBuilder {
   bool free_slip_div_, any_side_ = false, any_wall_ = false;
   std::array<double, 2> lo_{}, hi_{}, len_{};
   std::array<SideSpec, 4> sides_{};
+  bool wall_particles_ = false;  // boundary.wall_particles (2D)
+  double dx_ = 1;
+  void add_wall_particles(std::size_t i, const double p[2], double reach, GhostSet& g) const;
 };
 
 }  // namespace arksph

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "integrate/erk_integrator.hpp"
+#include "integrate/imex_integrator.hpp"
 #include "kernels/kernel.hpp"
 #include "projection/poisson_solver.hpp"
 #include "rhs/terms.hpp"
@@ -21,6 +22,7 @@ std::vector<std::string> registered_names(const std::string& family) {
   if (family == "kernel_correction") return kernel_correction_names();
   if (family == "density_correction") return {"none", "pozorski_wawrenczuk"};
   if (family == "erk_table") return erk_table_names();
+  if (family == "imex_pair") return imex_pair_names();
   return {};
 }
 

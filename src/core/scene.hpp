@@ -36,6 +36,7 @@ struct Scene {
   std::array<SideSpec, 4> sides{};
   double corner_alpha = 0.0;          // Szewc et al. 2012 eq. 46, range [-1, 1]
   bool free_slip_divergence = false;  // Szewc §6: free-slip images for the velocity divergence only
+  bool wall_particles = false;  // Basa et al. 2008 §6.1.2: particles on the wall carrying its velocity (2D)
   std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear" | "quadratic"
 
   // [fluid]
@@ -89,6 +90,9 @@ struct Scene {
   double cfl = 0.25;      // coefficient of Szewc eqs. 34-35
   double rtol = 1e-2, atol = 1e-4;  // adaptive mode only: loose, so that the stability limits govern
   long max_steps = 100000000;
+  bool imex = false;                     // ARKStep IMEX: viscous term implicit (Newton, KLU), the rest explicit
+  std::string imex_pair = "ARK324L2SA";  // time.imex: ARKODE additive pair (arksph list: imex_pair)
+  bool imex_linear = false;              // time.imex: true: ARKStepSetLinear, J re-probed at every stage, one Newton iteration
 
   // [output]
   std::string directory = "runs/unnamed";

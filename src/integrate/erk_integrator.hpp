@@ -13,6 +13,8 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_nvector.h>
 
+#include "integrate/time_integrator.hpp"
+
 namespace arksph {
 
 using RhsFunction = std::function<void(double t, const double* y, double* ydot)>;
@@ -35,11 +37,6 @@ struct ErkOptions {
   std::function<void(double t, double* y)> postprocess_stage;
 };
 
-struct ErkStats {
-  long steps = 0, rhs_evals = 0, attempts = 0, error_test_fails = 0;
-  double last_step = 0;
-};
-
 // Table names accepted by ErkIntegrator: SUNDIALS' built-in ERK tables plus ARKSPH_FORWARD_EULER_1_1.
 std::vector<std::string> erk_table_names();
 // True when the table triggers the 6.4.1 FSAL bug (c_s = 1 but not first-same-as-last).
@@ -48,7 +45,7 @@ bool erk_table_has_fsal_bug(const std::string& name);
 bool erk_table_has_embedding(const std::string& name);
 int erk_table_order(const std::string& name);
 
-class ErkIntegrator {
+class ErkIntegrator final : public TimeIntegrator {
  public:
   ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt);
   ~ErkIntegrator();
@@ -56,22 +53,20 @@ class ErkIntegrator {
   ErkIntegrator& operator=(const ErkIntegrator&) = delete;
 
   // Advances to tout exactly (stop time). Returns the reached time; throws NumericalFailure on error.
-  double evolve_to(double tout);
+  double evolve_to(double tout) override;
   // One internal step, not past tstop.
-  double step(double tstop);
-  double* state();
+  double step(double tstop) override;
+  double* state() override;
   // Re-initialises the method at (t, state()) after the state was changed outside ARKODE.
-  void reset(double t);
-  std::size_t size() const { return n_; }
-  ErkStats stats() const;
-  bool workaround_installed() const { return workaround_; }
+  void reset(double t) override;
+  std::size_t size() const override { return n_; }
+  ErkStats stats() const override;
+  bool workaround_installed() const override { return workaround_; }
   // Checkpoints (io/checkpoint.hpp): re-initialises at (t, state()) as a new integrator created
   // there would start (first step h in adaptive mode; the fixed step otherwise), so that a run
   // restarted from the checkpoint continues bit for bit.
-  void restart_at(double t, double h);
-  double next_step() const;  // the step size ERKStep will attempt next
-  // Counters of the run before a restart, added to stats().
-  void set_counter_offset(const ErkStats& offset) { offset_ = offset; }
+  void restart_at(double t, double h) override;
+  double next_step() const override;  // the step size ERKStep will attempt next
 
  private:
   static int rhs_cb(double t, N_Vector y, N_Vector ydot, void* self);
@@ -88,7 +83,6 @@ class ErkIntegrator {
   double fixed_dt_ = 0;
   double current_h_ = 0;  // fixed-step mode: the step currently set in ERKStep (the last one may be shorter)
   bool workaround_ = false;
-  ErkStats offset_{};
   std::string last_message_;  // last ARKODE warning or error
 };
 

@@ -27,6 +27,7 @@ top    = { kind = "wall", velocity = [1.0, 0.0], slip = "no_slip" }   # the movi
 corner_alpha = 0.0             # corner ghost weighting, Szewc et al. 2012 eq. 46, in [-1, 1]
 free_slip_divergence = true    # free-slip images for the velocity divergence only (Szewc §6; needed at the lid corners)
 wall_velocity = "mirror"       # no-slip ghosts: "mirror" (2w - u) | "linear" (near-wall shear extrapolated, Basa §6.1.2) | "quadratic" (two rows)
+wall_particles = false         # true: particles on the no-slip walls with the wall velocity, one per fluid particle within dx (Basa §6.1.2)
 
 [fluid]
 spacing = 0.03333333333333333  # initial lattice spacing dx = 1/30 (must divide each domain length)
@@ -82,6 +83,9 @@ cfl = 0.25                     # coefficient of the stability limits, Szewc eqs.
 rtol = 1e-2                    # relative tolerance (adaptive mode only, > 0; loose: the stability limits govern)
 atol = 1e-4                    # absolute tolerance (adaptive mode only, > 0)
 max_steps = 100000000          # abort after this many steps (>= 1)
+imex = false                   # true: ARKStep IMEX, viscous term implicit (Newton + KLU), no viscous step limit (wcsph)
+imex_pair = "ARK324L2SA"       # imex: ARKODE additive pair ARK324L2SA | ARK436L2SA | ARK437L2SA | ARK548L2SA | ARK548L2SAb
+imex_linear = false            # imex: true: ARKStepSetLinear, exact J at every stage, one Newton iteration (slow); false: Newton, J reused
 
 [output]
 directory = "runs/default"     # output folder (--out overrides; default runs/<scene.name>)

@@ -142,7 +142,8 @@ void read_scene_domain(const Section& root, Scene& s) {
 
 void read_boundary(const Section& root, Scene& s) {
   const Section b = root.section(
-      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence", "wall_velocity"});
+      "boundary", {"left", "right", "bottom", "top", "corner_alpha", "free_slip_divergence", "wall_velocity",
+                                            "wall_particles"});
   const std::size_t dim = s.dimension;
   for (int i = 0; i < 4; ++i) {
     if (i >= 2 && dim == 1) {
@@ -178,6 +179,9 @@ void read_boundary(const Section& root, Scene& s) {
   // wall_velocity: tangential velocity of no-slip ghosts (Basa et al. 2008 §6.1.2): "mirror" (2w - u of
   // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall)
   s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear", "quadratic"}, s.wall_velocity);
+  // wall_particles: add particles on the no-slip walls carrying the wall velocity, one per fluid
+  // particle closer than dx (Basa et al. 2008 §6.1.2), with any wall_velocity rule; 2D
+  s.wall_particles = b.boolean("wall_particles", s.wall_particles);
   bool any_wall = false;
   for (std::size_t i = 0; i < 2 * dim; ++i) any_wall |= s.sides[i].kind == SideKind::wall;
   if (s.free_slip_divergence && !any_wall)
@@ -307,7 +311,8 @@ void read_method(const Section& root, Scene& s) {
 }
 
 void read_time_output(const Section& root, Scene& s) {
-  const Section t = root.section("time", {"end", "integrator", "dt", "cfl", "rtol", "atol", "max_steps"});
+  const Section t = root.section("time", {"end", "integrator", "dt", "cfl", "rtol", "atol", "max_steps", "imex",
+                                            "imex_pair", "imex_linear"});
   s.end = t.number("end", std::nullopt);  // final simulated time
   t.require(s.end > 0, "end", "> 0", s.end);
   s.integrator = t.registered("integrator", "erk_table", s.integrator);  // ARKODE table name
@@ -321,6 +326,12 @@ void read_time_output(const Section& root, Scene& s) {
   t.require(s.atol > 0, "atol", "> 0", s.atol);
   s.max_steps = t.integer("max_steps", s.max_steps);
   t.require(s.max_steps >= 1, "max_steps", ">= 1", static_cast<double>(s.max_steps));
+  // IMEX: ARKStep with the viscous term implicit (app README "Stiff viscosity"); time.integrator is
+  // then unused, the pair names both tables
+  s.imex = t.boolean("imex", s.imex);
+  s.imex_pair = t.registered("imex_pair", "imex_pair", s.imex_pair);
+  s.imex_linear = t.boolean("imex_linear", s.imex_linear);
+  if (s.imex && s.scheme != "wcsph") t.fail("imex", "needs method.scheme = \"wcsph\" (got \"" + s.scheme + "\")");
 
   const Section o = root.section("output", {"directory", "every", "checkpoint_every"});
   s.directory = o.string("directory", "runs/" + s.name);

@@ -62,7 +62,8 @@ std::string scene_to_toml(const Scene& s) {
   }
   o << "corner_alpha = " << num(s.corner_alpha) << "\n"
     << "free_slip_divergence = " << boolean(s.free_slip_divergence) << "\n"
-    << "wall_velocity = " << quote(s.wall_velocity) << "\n\n";
+    << "wall_velocity = " << quote(s.wall_velocity) << "\n"
+    << "wall_particles = " << boolean(s.wall_particles) << "\n\n";
   o << "[fluid]\n"
     << "spacing = " << num(s.spacing) << "\n"
     << "density = " << num(s.density) << "\n"
@@ -112,7 +113,10 @@ std::string scene_to_toml(const Scene& s) {
     << "cfl = " << num(s.cfl) << "\n"
     << "rtol = " << num(s.rtol) << "\n"
     << "atol = " << num(s.atol) << "\n"
-    << "max_steps = " << s.max_steps << "\n\n";
+    << "max_steps = " << s.max_steps << "\n"
+    << "imex = " << boolean(s.imex) << "\n"
+    << "imex_pair = " << quote(s.imex_pair) << "\n"
+    << "imex_linear = " << boolean(s.imex_linear) << "\n\n";
   o << "[output]\n"
     << "directory = " << quote(s.directory) << "\n"
     << "every = " << num(s.every) << "\n"

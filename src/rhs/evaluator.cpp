@@ -37,6 +37,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   layout_.has_energy = scene.scheme == "wcsph" && scene.equation_of_state == "ideal_gas";
   std::stable_sort(terms_.begin(), terms_.end(),
                    [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
+  for (const auto& t : terms_) viscous_.push_back(t->name().rfind("viscosity:", 0) == 0);
   fields_.dim = particles.dim;
   fields_.n_real = particles.n;
   fields_.kernel = &kernel_;
@@ -123,7 +124,17 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
     f.flip_x[n + g] = ghosts_.place[g][0];
     if (two_d) f.flip_y[n + g] = ghosts_.place[g][1];
   }
-  for (std::size_t g = 0; g < ng; ++g) {
+  for (std::size_t g = 0; g < ng; ++g) f.m[n + g] = f.m[ghosts_.source[g]];
+  ghost_velocities();
+  f.nu.assign(f.n_all, nu_);
+}
+
+// Ghost velocities from their sources' (affine maps), then the wall-velocity extrapolations.
+void RhsEvaluator::ghost_velocities() {
+  FluidFields& f = fields_;
+  const std::size_t n = layout_.n;
+  const bool two_d = layout_.dim == 2;
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
     const std::size_t i = n + g, s = ghosts_.source[g];
     const auto& mv = ghosts_.map[g];
     const auto& md = ghosts_.div_map[g];
@@ -134,11 +145,50 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
       f.v[i] = mv[1] * vs + mv[3];
       f.vd[i] = md[1] * vs + md[3];
     }
-    f.m[i] = f.m[s];
   }
   if (linear_wall_) linear_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
   if (quadratic_wall_) quadratic_wall_->apply(ghosts_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
-  f.nu.assign(f.n_all, nu_);
+}
+
+// The viscous terms alone into (au, av); dudt, dvdt are left as they were.
+void RhsEvaluator::apply_viscous_terms(std::vector<double>& au, std::vector<double>& av) {
+  FluidFields& f = fields_;
+  keep_du_.assign(f.dudt.begin(), f.dudt.end());
+  keep_dv_.assign(f.dvdt.begin(), f.dvdt.end());
+  std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
+  std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
+  for (std::size_t k = 0; k < terms_.size(); ++k)
+    if (viscous_[k]) terms_[k]->apply(f);
+  au.assign(f.dudt.begin(), f.dudt.end());
+  av.assign(f.dvdt.begin(), f.dvdt.end());
+  f.dudt.swap(keep_du_);
+  f.dvdt.swap(keep_dv_);
+}
+
+void RhsEvaluator::implicit_part(double* ydot_i) const {
+  std::fill(ydot_i, ydot_i + layout_.size(), 0.0);
+  std::copy(visc_u_.begin(), visc_u_.end(), ydot_i + layout_.vel(0));
+  if (layout_.dim == 2) std::copy(visc_v_.begin(), visc_v_.end(), ydot_i + layout_.vel(1));
+}
+
+void RhsEvaluator::viscous_acceleration(const double* u, const double* v, double* au, double* av) {
+  FluidFields& f = fields_;
+  const std::size_t n = layout_.n;
+  const bool two_d = layout_.dim == 2;
+  keep_u_.assign(f.u.begin(), f.u.end());
+  keep_v_.assign(f.v.begin(), f.v.end());
+  std::copy(u, u + n, f.u.begin());
+  if (two_d) std::copy(v, v + n, f.v.begin());
+  keep_ud_.assign(f.ud.begin(), f.ud.end());  // ghost_velocities also writes the divergence copies
+  keep_vd_.assign(f.vd.begin(), f.vd.end());
+  ghost_velocities();
+  apply_viscous_terms(probe_u_, probe_v_);
+  std::copy(probe_u_.begin(), probe_u_.end(), au);
+  if (two_d) std::copy(probe_v_.begin(), probe_v_.end(), av);
+  f.u.swap(keep_u_);
+  f.v.swap(keep_v_);
+  f.ud.swap(keep_ud_);
+  f.vd.swap(keep_vd_);
 }
 
 bool RhsEvaluator::needs_rebuild() const {
@@ -191,16 +241,19 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   copy_to_ghosts(f.rho);
   copy_to_ghosts(f.p);
   Term::Stage done = Term::Stage::density;
-  for (const auto& term : terms_) {
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    const auto& term = terms_[k];
     if (term->stage() != done) {  // entering a later stage: ghosts take their sources' new values
       copy_to_ghosts(f.rho);
       copy_to_ghosts(f.p);
       done = term->stage();
     }
+    if (implicit_viscosity_ && viscous_[k]) continue;  // IMEX: f_I, below
     term->apply(f);
   }
   copy_to_ghosts(f.rho);
   copy_to_ghosts(f.p);
+  if (implicit_viscosity_) apply_viscous_terms(visc_u_, visc_v_);
 
   double amax = 0;
   for (std::size_t a = 0; a < n; ++a)

@@ -44,11 +44,25 @@ class RhsEvaluator {
   void invalidate_neighbors() { ref_x_.clear(); }
   const RhsTiming& timing() const { return timing_; }
 
+  // IMEX (time.imex): with `on`, eval() leaves the viscous terms out of ydot (f_E) and keeps their
+  // acceleration for implicit_part() (f_I). Off (the default), eval() is the explicit path unchanged.
+  void set_viscosity_implicit(bool on) { implicit_viscosity_ = on; }
+  bool viscosity_implicit() const { return implicit_viscosity_; }
+  // f_I of the last eval(): zero except the velocity block, which holds the viscous acceleration.
+  void implicit_part(double* ydot_i) const;
+  // The viscous acceleration (au, av) of the real particles for real velocities (u, v) (v, av unused
+  // in 1D), at the positions, densities and kernel corrections of the last eval(), which stay
+  // frozen: ghost velocities follow from (u, v) by the wall rules. Leaves fields() as it found them.
+  // Affine in (u, v): the probes of the implicit Jacobian (app/viscous_jacobian.hpp).
+  void viscous_acceleration(const double* u, const double* v, double* au, double* av);
+
  private:
   void load_state(double t, const double* y);
   void refresh_ghosts(bool rebuild);
   bool needs_rebuild() const;
   void copy_to_ghosts(std::vector<double>& field);
+  void ghost_velocities();
+  void apply_viscous_terms(std::vector<double>& au, std::vector<double>& av);
 
   StateLayout layout_;
   ParticleSet particles_;
@@ -71,6 +85,11 @@ class RhsEvaluator {
   double max_accel_ = 0;
   long evals_ = 0;
   RhsTiming timing_;
+  bool implicit_viscosity_ = false;
+  std::vector<bool> viscous_;                   // per term (sorted order): a viscosity term
+  std::vector<double> visc_u_, visc_v_;         // IMEX: viscous acceleration of the last eval
+  std::vector<double> keep_u_, keep_v_, keep_ud_, keep_vd_, keep_du_, keep_dv_;  // scratch of viscous_acceleration
+  std::vector<double> probe_u_, probe_v_;
 };
 
 }  // namespace arksph

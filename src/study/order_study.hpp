@@ -12,6 +12,9 @@
 //   scene = "../taylor_green/scene.toml"   # relative to the study file
 //   set = ["time.end=0.05"]                 # --set values for every run (optional)
 //   tables = ["ARKSPH_FORWARD_EULER_1_1", "ARKODE_HEUN_EULER_2_1_2"]
+//   imex_pairs = ["ARK324L2SA"]            # ARKStep IMEX pairs, viscous term implicit (time.imex);
+//                                           # listed as "imex:ARK324L2SA" (also in [dt_for] and
+//                                           # reference_table)
 //   dt = [2e-3, 1e-3, 5e-4]                 # fixed steps, every table
 //   reference_table = ""                    # "" (default): each table is its own reference
 //   reference_dt_divisor = 64               # reference step = smallest dt of the study (of the table

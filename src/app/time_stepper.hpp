@@ -1,0 +1,27 @@
+// The run's time integrator from the scene: ERKStep with time.integrator, or, with time.imex,
+// ARKStep with the pair time.imex_pair, the viscous term implicit (integrate/viscous_split.hpp).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "integrate/erk_integrator.hpp"
+#include "integrate/imex_integrator.hpp"
+#include "integrate/time_integrator.hpp"
+#include "integrate/viscous_split.hpp"
+#include "rhs/evaluator.hpp"
+
+namespace arksph {
+
+struct TimeStepper {
+  std::unique_ptr<ViscousSplit> split;  // time.imex only
+  std::unique_ptr<TimeIntegrator> integrator;
+};
+
+// `eo`: the ERK options of the run (integrator_options plus stability limit, first step and
+// projection callbacks); the IMEX integrator takes its step control from it (no post-processing:
+// time.imex is wcsph only).
+TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
+                              double t0);
+
+}  // namespace arksph

@@ -39,7 +39,7 @@ def main():
         ax.axhline(a.target, color="grey", ls="--", lw=0.8, label="target %.2g" % a.target)
     ax.set_xlabel("wall time of the run [s]")
     ax.set_ylabel("L2 velocity error at the end time")
-    ax.set_title(a.title)
+    ax.set_title(a.title, fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -131,9 +131,10 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
   s.source = path;
   for (const auto& [k, v] : *st) {
     const std::string name(k.str()), key = "study." + name;
-    if (name == "scene" || name == "output" || name == "reference") {
+    if (name == "scene" || name == "output" || name == "reference" || name == "title") {
       if (!v.is_string()) throw bad(key, "expected a string");
-      (name == "scene" ? s.scene : name == "output" ? s.output : s.reference) = v.as_string()->get();
+      (name == "scene" ? s.scene : name == "output" ? s.output : name == "title" ? s.title : s.reference) =
+          v.as_string()->get();
     } else if (name == "set" || name == "reference_set" || name == "analytic_velocity") {
       (name == "set" ? s.sets : name == "reference_set" ? s.reference_sets : s.analytic_velocity) =
           strings(v, path + ": " + key);
@@ -236,13 +237,13 @@ void write_csv(const std::string& path, const std::vector<WorkPrecisionPoint>& p
       << p.rhs_evals << "," << p.l1 << "," << p.l2 << "," << p.linf << "," << p.status << "," << p.run << "\n";
 }
 
-void plot(const std::string& csv, const std::string& png, double target) {
+void plot(const std::string& csv, const std::string& png, double target, const std::string& title) {
   const char* env = std::getenv("ARKSPH_PLOT_WORK_PRECISION");
   const std::string script = env ? env : std::string(ARKSPH_SOURCE_DIR_STR) + "/scripts/plot_work_precision.py";
   if (!fs::exists(script)) return;
   for (const char* python : {"/usr/bin/python3", "python3"}) {  // the system python has Debian's matplotlib
     const std::string cmd = std::string(python) + " '" + script + "' '" + csv + "' '" + png + "' --target " +
-                            std::to_string(target) + " >/dev/null 2>&1";
+                            std::to_string(target) + " --title '" + title + "' >/dev/null 2>&1";
     if (std::system(cmd.c_str()) == 0 && fs::exists(png)) {
       std::printf("plot: %s\n", png.c_str());
       return;
@@ -371,7 +372,10 @@ int cmd_work_precision_study(int argc, char** argv) {
   else
     std::printf("soonest to L2 error %.3g: %s, %.3g s (%s)\n", target, best.c_str(), best_t, others.c_str());
   std::printf("results: %s\n", csv.c_str());
-  plot(csv, (fs::path(study.output) / "work_precision.png").string(), target);
+  std::string title = study.title.empty() ? fs::path(study.source).stem().string() : study.title;
+  for (char& c : title)
+    if (c == '\'') c = ' ';
+  plot(csv, (fs::path(study.output) / "work_precision.png").string(), target, title);
   std::fflush(stdout);
   return 0;
 }

@@ -23,6 +23,7 @@
 //   analytic_velocity = ["u(x,y,t)", "v(x,y,t)"]  # reference = "analytic"
 //   reference_set = ["fluid.spacing=0.005"]       # reference = "run"
 //   target_error = 1e-3                 # L2 level of the "soonest" line (default: geometric mean of the errors)
+//   title = "spin-down, Re = 420"       # of the plot (default: the study file's name)
 //
 //   [[scheme]]                          # one or more
 //   name = "isph+pw"
@@ -47,7 +48,7 @@ struct WorkPrecisionStudy {
     std::string name;
     std::vector<std::string> sets;
   };
-  std::string source, scene, output, reference;
+  std::string source, scene, output, reference, title;
   std::vector<std::string> sets, reference_sets;
   std::vector<std::string> analytic_velocity;  // u, v
   std::vector<Entry> schemes, resolutions;

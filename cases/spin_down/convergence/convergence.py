@@ -96,6 +96,19 @@ def interp_error(coarse, fine, h_fine):
     return err.mean(), math.sqrt((err ** 2).mean())
 
 
+def grown(run_dir, t):
+    """True when the run's max speed at t exceeds that of the previous output (timeseries.csv): the
+    spin-down only decays, so the run has gone unstable by t."""
+    path = os.path.join(run_dir, "timeseries.csv")
+    if not os.path.exists(path):
+        return False
+    rows = list(csv.DictReader(open(path)))
+    for prev, cur in zip(rows, rows[1:]):
+        if abs(float(cur["t"]) - t) < 1e-9:
+            return float(cur["max_speed"]) > float(prev["max_speed"])
+    return False
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("batch_dir")
@@ -135,7 +148,8 @@ def main():
                                                    *(("%.4f" % q[0], "%.4f" % q[1]) if q else ("", ""))))
     md = ["### %s" % (a.label or a.batch_dir), "",
           "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q; C&R's values in brackets; "
-          "— where a run did not reach t." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs)), "",
+          "— where a run did not reach t; † after t where a run of the pair has gone unstable (its maximum speed "
+          "grew since the previous output)." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs)), "",
           "| t | L1 (%d²–%d²) | L2 | L1 (%d²–%d²) | L2 | Q L1 | Q L2 |" % (n[0], n[1], n[1], n3),
           "|---|---|---|---|---|---|---|"]
     paper = PAPER.get(a.paper)
@@ -150,8 +164,10 @@ def main():
 
         def rate(k):
             return ("%.2f" % q[k] if q else "—") + (" [%.2f]" % p[4 + k] if p else "")
-        md.append("| %g | %s | %s | %s | %s | %s | %s |" % (
-            t, cell(e1, 0, sc1), cell(e1, 1, sc1), cell(e2, 2, sc2), cell(e2, 3, sc2), rate(0), rate(1)))
+        bad = [grown(r[2], t) for r in runs]
+        mark = "†" if any(bad) else ""
+        md.append("| %g%s | %s | %s | %s | %s | %s | %s |" % (
+            t, mark, cell(e1, 0, sc1), cell(e1, 1, sc1), cell(e2, 2, sc2), cell(e2, 3, sc2), rate(0), rate(1)))
     text = "\n".join(md) + "\n"
     open(os.path.join(a.batch_dir, "convergence.md"), "w").write(text)
     print(text)

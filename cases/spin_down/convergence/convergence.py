@@ -2,6 +2,7 @@
 """Spatial convergence of the spin-down (Cummins & Rudman 1999 §3.4, Tables I-III).
 
 usage: convergence.py BATCH_DIR [--label NAME] [--paper table1|table3|table2|none] [--times 1 2 3 4 5]
+                      [--periodic 1.0]   (doubly periodic box of that period: minimum-image interpolation)
 
 BATCH_DIR is the output of `arksph batch` over three lattices (coarse to fine). For each pair of
 consecutive lattices, the velocities of the finer run are interpolated onto the coarser run's
@@ -83,14 +84,23 @@ def spacing_and_h(run_dir):
     return float(m.group(1)), float(m.group(2))
 
 
-def interp_error(coarse, fine, h_fine):
+def interp_error(coarse, fine, h_fine, period=0.0):
+    """period > 0: a doubly periodic box [0, period)^2 (minimum-image distances)."""
     xc, uc, _ = coarse
     xf, uf, vf = fine
-    tree = cKDTree(xf)
+    if period > 0:
+        xc, xf = np.mod(xc, period), np.mod(xf, period)
+    tree = cKDTree(xf, boxsize=period if period > 0 else None)
     err = np.empty(len(xc))
     for a, nbrs in enumerate(tree.query_ball_point(xc, 2.5 * h_fine)):
-        nbrs = np.asarray(nbrs)
-        w = vf[nbrs] * quartic(np.linalg.norm(xf[nbrs] - xc[a], axis=1) / h_fine)
+        nbrs = np.asarray(nbrs, dtype=int)
+        if len(nbrs) == 0:  # no finer particle within reach (a run gone unstable): the error is |u|
+            err[a] = np.linalg.norm(uc[a])
+            continue
+        d = xf[nbrs] - xc[a]
+        if period > 0:
+            d -= period * np.round(d / period)
+        w = vf[nbrs] * quartic(np.linalg.norm(d, axis=1) / h_fine)
         ui = (w[:, None] * uf[nbrs]).sum(axis=0) / w.sum()
         err[a] = np.linalg.norm(uc[a] - ui)
     return err.mean(), math.sqrt((err ** 2).mean())
@@ -115,6 +125,7 @@ def main():
     ap.add_argument("--label", default="")
     ap.add_argument("--paper", default="table1", choices=["table1", "table2", "table3", "none"])
     ap.add_argument("--times", type=float, nargs="+", default=[1, 2, 3, 4, 5])
+    ap.add_argument("--periodic", type=float, default=0.0, help="period of a doubly periodic box (0: walls)")
     a = ap.parse_args()
     runs = []
     with open(os.path.join(a.batch_dir, "batch.csv")) as f:
@@ -132,10 +143,10 @@ def main():
         frames = [read_frame(r[2], t) for r in runs]
         if frames[0] is None or frames[1] is None:
             continue
-        e1 = interp_error(frames[0], frames[1], runs[1][1])
+        e1 = interp_error(frames[0], frames[1], runs[1][1], a.periodic)
         e2 = q = None
         if len(runs) > 2 and frames[2] is not None:
-            e2 = interp_error(frames[1], frames[2], runs[2][1])
+            e2 = interp_error(frames[1], frames[2], runs[2][1], a.periodic)
             ratio = math.log(runs[0][0] / runs[1][0])
             q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)]
         rows.append((t, e1, e2, q))

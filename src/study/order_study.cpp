@@ -271,8 +271,9 @@ int cmd_order_study(int argc, char** argv) {
   const std::string png = (fs::path(study.output) / "order.png").string();
   if (fs::exists(script))
     for (const char* python : {"/usr/bin/python3", "python3"}) {  // the system python has Debian's matplotlib
+      const std::string label = study.reference == "analytic" ? " 'max velocity error against the analytic solution'" : "";
       const std::string cmd = std::string(python) + " '" + script + "' '" + err_csv + "' '" + fit_csv + "' '" + png +
-                              "' >/dev/null 2>&1";
+                              "'" + label + " >/dev/null 2>&1";
       if (std::system(cmd.c_str()) == 0 && fs::exists(png)) {
         std::printf("plot: %s\n", png.c_str());
         break;

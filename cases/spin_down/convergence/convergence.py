@@ -141,21 +141,24 @@ def main():
     rows = []  # (t, e1, e2 or None, q or None); a run that stopped early (e.g. interrupted) leaves gaps
     for t in a.times:
         frames = [read_frame(r[2], t) for r in runs]
-        if frames[0] is None or frames[1] is None:
+        if frames[1] is None:
             continue
-        e1 = interp_error(frames[0], frames[1], runs[1][1], a.periodic)
+        e1 = interp_error(frames[0], frames[1], runs[1][1], a.periodic) if frames[0] is not None else None
         e2 = q = None
         if len(runs) > 2 and frames[2] is not None:
             e2 = interp_error(frames[1], frames[2], runs[2][1], a.periodic)
             ratio = math.log(runs[0][0] / runs[1][0])
-            q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)]
+            q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)] if e1 else None
+        if e1 is None and e2 is None:
+            continue
         rows.append((t, e1, e2, q))
     n3 = n[2] if len(n) > 2 else 0
     out_csv = os.path.join(a.batch_dir, "convergence.csv")
     with open(out_csv, "w") as f:
         f.write("t,L1_%d_%d,L2_%d_%d,L1_%d_%d,L2_%d_%d,Q_L1,Q_L2\n" % (n[0], n[1], n[0], n[1], n[1], n3, n[1], n3))
         for t, e1, e2, q in rows:
-            f.write("%g,%.6e,%.6e,%s,%s,%s,%s\n" % (t, e1[0], e1[1], *(("%.6e" % e2[0], "%.6e" % e2[1]) if e2 else ("", "")),
+            f.write("%g,%s,%s,%s,%s,%s,%s\n" % (t, *(("%.6e" % e1[0], "%.6e" % e1[1]) if e1 else ("", "")),
+                                               *(("%.6e" % e2[0], "%.6e" % e2[1]) if e2 else ("", "")),
                                                    *(("%.4f" % q[0], "%.4f" % q[1]) if q else ("", ""))))
     md = ["### %s" % (a.label or a.batch_dir), "",
           "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q; C&R's values in brackets; "

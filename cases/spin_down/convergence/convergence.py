@@ -161,9 +161,10 @@ def main():
                                                *(("%.6e" % e2[0], "%.6e" % e2[1]) if e2 else ("", "")),
                                                    *(("%.4f" % q[0], "%.4f" % q[1]) if q else ("", ""))))
     md = ["### %s" % (a.label or a.batch_dir), "",
-          "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q; C&R's values in brackets; "
+          "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q%s; "
           "— where a run did not reach t; † after t where a run of the pair has gone unstable (its maximum speed "
-          "grew since the previous output)." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs)), "",
+          "grew since the previous output)." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs),
+                                              "; C&R's values in brackets" if a.paper != "none" else ""), "",
           "| t | L1 (%d²–%d²) | L2 | L1 (%d²–%d²) | L2 | Q L1 | Q L2 |" % (n[0], n[1], n[1], n3),
           "|---|---|---|---|---|---|---|"]
     paper = PAPER.get(a.paper)

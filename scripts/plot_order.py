@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plot of `arksph study order`: error against dt (log-log) per table, with the nominal slopes.
 
-usage: plot_order.py order_errors.csv order_fit.csv order.png
+usage: plot_order.py order_errors.csv order_fit.csv order.png [Y-AXIS LABEL]
 Exits 0 without a plot (message on stderr) when matplotlib is missing.
 """
 import csv
@@ -9,7 +9,7 @@ import sys
 
 
 def main():
-    if len(sys.argv) != 4:
+    if len(sys.argv) not in (4, 5):
         sys.exit(__doc__)
     try:
         import matplotlib
@@ -39,7 +39,7 @@ def main():
         # the nominal slope through the largest step's error
         ax.loglog(dt, [err[-1] * (d / dt[-1]) ** nominal for d in dt], ":", color=line.get_color())
     ax.set_xlabel("dt")
-    ax.set_ylabel("max-norm state error against the reference run")
+    ax.set_ylabel(sys.argv[4] if len(sys.argv) > 4 else "max-norm state error against the reference run")
     ax.set_title("observed order (dotted: nominal slope)")
     ax.legend(fontsize=7)
     ax.grid(True, which="both", alpha=0.3)

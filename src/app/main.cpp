@@ -33,6 +33,7 @@ const char* kUsage =
     "      one stored in FILE with the --set overrides. Output continues in its directory (or --out DIR).\n"
     "  arksph batch SWEEP.toml [--jobs N] [--out DIR]   parameter sweep in parallel child runs (batch --help)\n"
     "  arksph study order STUDY.toml [--out DIR]        observed temporal order of ARKODE tables (study --help)\n"
+    "  arksph study work-precision STUDY.toml           error against wall time, schemes x resolutions\n"
     "  arksph list                 registered kernels, schemes, viscosity models, ARKODE tables, ...\n"
     "  arksph default-scene        prints the embedded default scene (a commented template of every key)\n"
     "  arksph --help | run --help  this text\n"

@@ -1,4 +1,5 @@
-// `arksph batch` and `arksph study`: argument parsing around study/batch.hpp and study/order_study.hpp.
+// `arksph batch` and `arksph study`: argument parsing around study/batch.hpp, study/order_study.hpp and
+// study/work_precision.hpp.
 #include "app/study_commands.hpp"
 
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include "core/errors.hpp"
 #include "study/batch.hpp"
 #include "study/order_study.hpp"
+#include "study/work_precision.hpp"
 
 namespace arksph {
 
@@ -25,7 +27,11 @@ const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...]\n"
     "  Temporal order of ARKODE tables on one scene at fixed steps (see README, \"Order study\").\n"
     "  Writes <out>/order_errors.csv and <out>/order_fit.csv; exit 0 if every table is within the\n"
-    "  tolerance of its nominal order, 4 if one is flagged, 2 for bad input.\n";
+    "  tolerance of its nominal order, 4 if one is flagged, 2 for bad input.\n"
+    "usage: arksph study work-precision STUDY.toml [--out DIR] [--jobs N] [--set KEY=VALUE ...] [--quiet]\n"
+    "  Error against wall time for schemes x resolutions (see README, \"Work-precision\"). Writes\n"
+    "  <out>/work_precision.csv (and .png), prints which scheme reaches the target error soonest;\n"
+    "  exit 0, 3 if the reference run failed or no run finished, 2 for bad input.\n";
 
 int parse_int(const std::string& opt, const std::string& v) {
   char* end = nullptr;
@@ -77,7 +83,8 @@ int cmd_study(int argc, char** argv) {
   }
   const std::string kind = argv[0];
   if (kind == "order") return cmd_order_study(argc - 1, argv + 1);
-  throw InputError("study " + kind + ": unknown study (expected: order)");
+  if (kind == "work-precision") return cmd_work_precision_study(argc - 1, argv + 1);
+  throw InputError("study " + kind + ": unknown study (expected: order, work-precision)");
 }
 
 }  // namespace arksph

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "core/errors.hpp"
 
 #include "kernels/kernel.hpp"
 
@@ -28,8 +31,16 @@ void CellList::build(const double* x, const double* y, std::size_t n, double rad
   inv_side_ = 1.0 / radius;
   x0_ = xmin;
   y0_ = ymin;
-  nx_ = static_cast<long>((xmax - xmin) * inv_side_) + 1;
-  ny_ = y ? static_cast<long>((ymax - ymin) * inv_side_) + 1 : 1;
+  // Points spread over more cells than any run needs (or not finite) are a run that has blown up
+  // between two state checks, e.g. in a stage: fail as such (exit 3), not by a huge allocation.
+  const double cells_x = (xmax - xmin) * inv_side_ + 1, cells_y = y ? (ymax - ymin) * inv_side_ + 1 : 1;
+  const double max_cells = 64.0 * static_cast<double>(n) + 1e7;
+  if (!(cells_x * cells_y <= max_cells))
+    throw NumericalFailure("particles spread over " + std::to_string(cells_x * cells_y) +
+                           " neighbour cells (bounding box x [" + std::to_string(xmin) + ", " + std::to_string(xmax) +
+                           "], y [" + std::to_string(ymin) + ", " + std::to_string(ymax) + "]): the run has blown up");
+  nx_ = static_cast<long>(cells_x);
+  ny_ = static_cast<long>(cells_y);
   const std::size_t ncell = static_cast<std::size_t>(nx_ * ny_);
   start_.assign(ncell + 1, 0);
   std::vector<std::uint32_t> cell(n);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "app/setup.hpp"
@@ -16,6 +17,7 @@
 #include "core/names.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
+#include "study/reference_error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -113,9 +115,15 @@ OrderStudy read_order_study(const std::string& path, const std::vector<std::stri
   s.source = path;
   for (const auto& [k, v] : *st) {
     const std::string key = "study." + std::string(k.str()), name(k.str());
-    if (name == "scene" || name == "output" || name == "reference_table") {
+    if (name == "scene" || name == "output" || name == "reference_table" || name == "reference") {
       if (!v.is_string()) throw bad(key, "expected a string");
-      (name == "scene" ? s.scene : name == "output" ? s.output : s.reference_table) = v.as_string()->get();
+      (name == "scene" ? s.scene : name == "output" ? s.output : name == "reference" ? s.reference : s.reference_table) =
+          v.as_string()->get();
+    } else if (name == "analytic_velocity") {
+      const toml::array* a = v.as_array();
+      if (!a || a->size() != 2 || !(*a)[0].is_string() || !(*a)[1].is_string())
+        throw bad(key, "expected two expressions [u, v] of x, y, t");
+      s.analytic_velocity = {(*a)[0].as_string()->get(), (*a)[1].as_string()->get()};
     } else if (name == "set" || name == "tables" || name == "imex_pairs") {
       const toml::array* a = v.as_array();
       if (!a) throw bad(key, "expected an array of strings");
@@ -138,6 +146,18 @@ OrderStudy read_order_study(const std::string& path, const std::vector<std::stri
     } else {
       throw bad(key, "unknown key");
     }
+  }
+  if (s.reference != "fine_step" && s.reference != "analytic")
+    throw bad("study.reference", "'" + s.reference + "': expected fine_step or analytic");
+  if (s.reference == "analytic") {
+    if (s.analytic_velocity.empty()) throw bad("study.analytic_velocity", "missing (needed by reference = \"analytic\")");
+    try {
+      AnalyticVelocity check(s.analytic_velocity[0], s.analytic_velocity[1]);
+    } catch (const InputError& e) {
+      throw bad("study.analytic_velocity", e.what());
+    }
+  } else if (!s.analytic_velocity.empty()) {
+    throw bad("study.analytic_velocity", "only with reference = \"analytic\"");
   }
   if (s.scene.empty()) throw bad("study.scene", "missing (the scene file)");
   if (fs::path(s.scene).is_relative()) s.scene = (fs::path(path).parent_path() / s.scene).lexically_normal().string();
@@ -175,8 +195,20 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
   double dt_min_all = 1e300;
   for (const auto& table : study.tables)
     for (double dt : study.dt_for.count(table) ? study.dt_for.at(table) : study.dt) dt_min_all = std::min(dt_min_all, dt);
+  const bool analytic = study.reference == "analytic";
+  std::unique_ptr<AnalyticVelocity> exact;
+  StateLayout layout;
+  if (analytic) {
+    exact = std::make_unique<AnalyticVelocity>(study.analytic_velocity[0], study.analytic_velocity[1]);
+    layout = build_model(scene).rhs->layout();
+  }
+  // The analytic mode's error: max over the particles of |u_a - u_exact(r_a, t_end)|.
+  const auto analytic_error = [&](const std::vector<double>& y) {
+    const std::vector<double> ones(layout.n, 1.0);
+    return errors_against_analytic(velocities_of(layout, y.data(), ones, ones), *exact, scene.end).linf;
+  };
   std::vector<double> shared_ref;
-  if (!study.reference_table.empty()) {
+  if (!study.reference_table.empty() && !analytic) {
     shared_ref = run_scene(scene, study.reference_table, dt_min_all / study.reference_dt_divisor, nullptr);
     if (log)
       std::fprintf(stderr, "order: reference %s at dt %.4g\n", study.reference_table.c_str(),
@@ -189,12 +221,15 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     const auto& steps = study.dt_for.count(table) ? study.dt_for.at(table) : study.dt;
     const double dt_min = *std::min_element(steps.begin(), steps.end());
     const std::vector<double> ref =  // else each table is its own reference at its smallest step / divisor
-        study.reference_table.empty() ? run_scene(scene, table, dt_min / study.reference_dt_divisor, nullptr) : shared_ref;
+        analytic                        ? std::vector<double>{}
+        : study.reference_table.empty() ? run_scene(scene, table, dt_min / study.reference_dt_divisor, nullptr)
+                                        : shared_ref;
     std::vector<double> xs, ys;
     for (double dt : steps) {
       OrderPoint p;
       p.dt = dt;
-      p.error = max_diff(run_scene(scene, table, dt, &p.rhs_evals), ref);
+      const std::vector<double> y = run_scene(scene, table, dt, &p.rhs_evals);
+      p.error = analytic ? analytic_error(y) : max_diff(y, ref);
       if (log) std::fprintf(stderr, "order: %-32s dt %-10.4g error %.4e\n", table.c_str(), dt, p.error);
       fit.points.push_back(p);
       xs.push_back(dt), ys.push_back(std::max(p.error, 1e-300));
@@ -260,8 +295,9 @@ int cmd_order_study(int argc, char** argv) {
   const std::string png = (fs::path(study.output) / "order.png").string();
   if (fs::exists(script))
     for (const char* python : {"/usr/bin/python3", "python3"}) {  // the system python has Debian's matplotlib
+      const std::string label = study.reference == "analytic" ? " 'max velocity error against the analytic solution'" : "";
       const std::string cmd = std::string(python) + " '" + script + "' '" + err_csv + "' '" + fit_csv + "' '" + png +
-                              "' >/dev/null 2>&1";
+                              "'" + label + " >/dev/null 2>&1";
       if (std::system(cmd.c_str()) == 0 && fs::exists(png)) {
         std::printf("plot: %s\n", png.c_str());
         break;

@@ -20,6 +20,10 @@
 //   reference_dt_divisor = 64               # reference step = smallest dt of the study (of the table
 //                                           # when it is its own reference) / divisor
 //   tolerance = 0.3                         # flag |observed - nominal| > tolerance
+//   reference = "fine_step"                 # "fine_step" (default, above) or "analytic": the error is then
+//   analytic_velocity = ["u(x,y,t)", "v(x,y,t)"]  # max_a |u_a - u_exact(r_a, t_end)| over the particles
+//                                           # (velocity only; it includes the spatial error, so the observed
+//                                           # order holds only while the time error dominates)
 //   output = "runs/order_study"             # --out overrides
 //
 //   [dt_for]                                # optional per-table step lists
@@ -40,6 +44,8 @@ struct OrderStudy {
   std::string reference_table;
   double reference_dt_divisor = 64;
   double tolerance = 0.3;
+  std::string reference = "fine_step";         // or "analytic"
+  std::vector<std::string> analytic_velocity;  // u, v expressions of x, y, t (reference = "analytic")
 };
 
 struct OrderPoint {

@@ -2,6 +2,7 @@
 """Spatial convergence of the spin-down (Cummins & Rudman 1999 §3.4, Tables I-III).
 
 usage: convergence.py BATCH_DIR [--label NAME] [--paper table1|table3|table2|none] [--times 1 2 3 4 5]
+                      [--periodic 1.0]   (doubly periodic box of that period: minimum-image interpolation)
 
 BATCH_DIR is the output of `arksph batch` over three lattices (coarse to fine). For each pair of
 consecutive lattices, the velocities of the finer run are interpolated onto the coarser run's
@@ -83,17 +84,39 @@ def spacing_and_h(run_dir):
     return float(m.group(1)), float(m.group(2))
 
 
-def interp_error(coarse, fine, h_fine):
+def interp_error(coarse, fine, h_fine, period=0.0):
+    """period > 0: a doubly periodic box [0, period)^2 (minimum-image distances)."""
     xc, uc, _ = coarse
     xf, uf, vf = fine
-    tree = cKDTree(xf)
+    if period > 0:
+        xc, xf = np.mod(xc, period), np.mod(xf, period)
+    tree = cKDTree(xf, boxsize=period if period > 0 else None)
     err = np.empty(len(xc))
     for a, nbrs in enumerate(tree.query_ball_point(xc, 2.5 * h_fine)):
-        nbrs = np.asarray(nbrs)
-        w = vf[nbrs] * quartic(np.linalg.norm(xf[nbrs] - xc[a], axis=1) / h_fine)
+        nbrs = np.asarray(nbrs, dtype=int)
+        if len(nbrs) == 0:  # no finer particle within reach (a run gone unstable): the error is |u|
+            err[a] = np.linalg.norm(uc[a])
+            continue
+        d = xf[nbrs] - xc[a]
+        if period > 0:
+            d -= period * np.round(d / period)
+        w = vf[nbrs] * quartic(np.linalg.norm(d, axis=1) / h_fine)
         ui = (w[:, None] * uf[nbrs]).sum(axis=0) / w.sum()
         err[a] = np.linalg.norm(uc[a] - ui)
     return err.mean(), math.sqrt((err ** 2).mean())
+
+
+def grown(run_dir, t):
+    """True when the run's max speed at t exceeds that of the previous output (timeseries.csv): the
+    spin-down only decays, so the run has gone unstable by t."""
+    path = os.path.join(run_dir, "timeseries.csv")
+    if not os.path.exists(path):
+        return False
+    rows = list(csv.DictReader(open(path)))
+    for prev, cur in zip(rows, rows[1:]):
+        if abs(float(cur["t"]) - t) < 1e-9:
+            return float(cur["max_speed"]) > float(prev["max_speed"])
+    return False
 
 
 def main():
@@ -102,6 +125,7 @@ def main():
     ap.add_argument("--label", default="")
     ap.add_argument("--paper", default="table1", choices=["table1", "table2", "table3", "none"])
     ap.add_argument("--times", type=float, nargs="+", default=[1, 2, 3, 4, 5])
+    ap.add_argument("--periodic", type=float, default=0.0, help="period of a doubly periodic box (0: walls)")
     a = ap.parse_args()
     runs = []
     with open(os.path.join(a.batch_dir, "batch.csv")) as f:
@@ -117,25 +141,30 @@ def main():
     rows = []  # (t, e1, e2 or None, q or None); a run that stopped early (e.g. interrupted) leaves gaps
     for t in a.times:
         frames = [read_frame(r[2], t) for r in runs]
-        if frames[0] is None or frames[1] is None:
+        if frames[1] is None:
             continue
-        e1 = interp_error(frames[0], frames[1], runs[1][1])
+        e1 = interp_error(frames[0], frames[1], runs[1][1], a.periodic) if frames[0] is not None else None
         e2 = q = None
         if len(runs) > 2 and frames[2] is not None:
-            e2 = interp_error(frames[1], frames[2], runs[2][1])
+            e2 = interp_error(frames[1], frames[2], runs[2][1], a.periodic)
             ratio = math.log(runs[0][0] / runs[1][0])
-            q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)]
+            q = [math.log(e1[k] / e2[k]) / ratio for k in range(2)] if e1 else None
+        if e1 is None and e2 is None:
+            continue
         rows.append((t, e1, e2, q))
     n3 = n[2] if len(n) > 2 else 0
     out_csv = os.path.join(a.batch_dir, "convergence.csv")
     with open(out_csv, "w") as f:
         f.write("t,L1_%d_%d,L2_%d_%d,L1_%d_%d,L2_%d_%d,Q_L1,Q_L2\n" % (n[0], n[1], n[0], n[1], n[1], n3, n[1], n3))
         for t, e1, e2, q in rows:
-            f.write("%g,%.6e,%.6e,%s,%s,%s,%s\n" % (t, e1[0], e1[1], *(("%.6e" % e2[0], "%.6e" % e2[1]) if e2 else ("", "")),
+            f.write("%g,%s,%s,%s,%s,%s,%s\n" % (t, *(("%.6e" % e1[0], "%.6e" % e1[1]) if e1 else ("", "")),
+                                               *(("%.6e" % e2[0], "%.6e" % e2[1]) if e2 else ("", "")),
                                                    *(("%.4f" % q[0], "%.4f" % q[1]) if q else ("", ""))))
     md = ["### %s" % (a.label or a.batch_dir), "",
-          "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q; C&R's values in brackets; "
-          "— where a run did not reach t." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs)), "",
+          "Lattices %s; h = %s. L1 / L2 velocity errors (×10⁻³), rates Q%s; "
+          "— where a run did not reach t; † after t where a run of the pair has gone unstable (its maximum speed "
+          "grew since the previous output)." % (", ".join("%d²" % k for k in n), ", ".join("%.4g" % r[1] for r in runs),
+                                              "; C&R's values in brackets" if a.paper != "none" else ""), "",
           "| t | L1 (%d²–%d²) | L2 | L1 (%d²–%d²) | L2 | Q L1 | Q L2 |" % (n[0], n[1], n[1], n3),
           "|---|---|---|---|---|---|---|"]
     paper = PAPER.get(a.paper)
@@ -150,8 +179,10 @@ def main():
 
         def rate(k):
             return ("%.2f" % q[k] if q else "—") + (" [%.2f]" % p[4 + k] if p else "")
-        md.append("| %g | %s | %s | %s | %s | %s | %s |" % (
-            t, cell(e1, 0, sc1), cell(e1, 1, sc1), cell(e2, 2, sc2), cell(e2, 3, sc2), rate(0), rate(1)))
+        bad = [grown(r[2], t) for r in runs]
+        mark = "†" if any(bad) else ""
+        md.append("| %g%s | %s | %s | %s | %s | %s | %s |" % (
+            t, mark, cell(e1, 0, sc1), cell(e1, 1, sc1), cell(e2, 2, sc2), cell(e2, 3, sc2), rate(0), rate(1)))
     text = "\n".join(md) + "\n"
     open(os.path.join(a.batch_dir, "convergence.md"), "w").write(text)
     print(text)

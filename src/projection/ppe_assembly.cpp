@@ -14,7 +14,7 @@ std::vector<double> divergence_cummins_rudman(const FluidFields& f) {
     const double rho_a = f.rho[a];
     const double ua = f.u[a] / (rho_a * rho_a), va = f.dim == 2 ? f.v[a] / (rho_a * rho_a) : 0.0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      if (b >= f.n_real) return;  // ghosts left out (C&R §2.5)
+      if (f.is_wall_image(b)) return;  // wall ghosts left out (C&R §2.5); periodic images are neighbours
       const double rb2 = f.rho[b] * f.rho[b];
       const double ux = f.u[b] / rb2 + ua, uy = f.dim == 2 ? f.v[b] / rb2 + va : 0.0;
       s += f.m[b] * F * (ux * rx + uy * ry);  // m_b (u_b/rho_b^2 + u_a/rho_a^2) . grad_a W_ab
@@ -91,8 +91,8 @@ PoissonSystem assemble_ppe_exact(const FluidFields& f, const std::vector<double>
       for (int k = 0; k < dims; ++k) {
         // G: row a, column src(b): V_b grad_a W_ab (pressure of ghost b is its source's)
         g[k].emplace_back(static_cast<int>(a), static_cast<int>(f.src[b]), vb * F * r[k]);
-        // D: row a, column b for real b only: V_b grad_a W_ab
-        if (b < n) d[k].emplace_back(static_cast<int>(a), static_cast<int>(b), vb * F * r[k]);
+        // D: row a, column src(b) for real b and periodic images (wall ghosts left out): V_b grad_a W_ab
+        if (!f.is_wall_image(b)) d[k].emplace_back(static_cast<int>(a), static_cast<int>(f.src[b]), vb * F * r[k]);
       }
     });
   }

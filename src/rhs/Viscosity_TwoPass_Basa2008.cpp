@@ -90,9 +90,7 @@ class ViscosityTwoPass final : public Term {
   }
 
  private:
-  static bool is_reflected(const FluidFields& f, std::size_t i) {
-    return (!f.flip_x.empty() && f.flip_x[i] < 0) || (!f.flip_y.empty() && f.flip_y[i] < 0);
-  }
+  static bool is_reflected(const FluidFields& f, std::size_t i) { return f.is_wall_image(i); }
   mutable CellList cells_;
   mutable std::vector<double> dux_, duy_, dvx_, dvy_, txx_, txy_, tyy_;
 };

@@ -25,6 +25,11 @@ struct FluidFields {
   std::vector<double> nu;      // kinematic viscosity per point
   std::vector<std::uint32_t> src;  // the real particle each point stands for (itself when real)
   std::vector<double> flip_x, flip_y;  // +1, or -1 where a point is a reflection of its source
+  // A wall image (mirrored across a wall, possibly also shifted periodically), as opposed to a real
+  // particle or a pure periodic image, which is a real neighbour in every respect.
+  bool is_wall_image(std::size_t i) const {
+    return (!flip_x.empty() && flip_x[i] < 0) || (!flip_y.empty() && flip_y[i] < 0);
+  }
 
   // Kernel consistency correction (Basa et al. 2008 §4), filled by the kernel_correction term for
   // all points (ghosts take their source's values, reflected): see rhs/KernelCorrection_Basa2008.hpp.

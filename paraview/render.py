@@ -24,6 +24,7 @@ FIELDS = {
     "speed": ("velocity", "Magnitude", -1),
     "pressure": ("pressure", None, 0),
     "density": ("density", None, 0),
+    "summation_density": ("summation_density", None, 0),
     "phase": ("phase", None, 0),
     "velocity_x": ("velocity", "X", 0),
     "velocity_y": ("velocity", "Y", 1),

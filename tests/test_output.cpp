@@ -47,7 +47,7 @@ bool has_tmp_file(const fs::path& dir) {
 // Particle fields with distinct, non-round values (ids beyond the 32-bit range, negative phases).
 struct Particles {
   std::size_t n;
-  std::vector<double> x, y, u, v, p, rho, m;
+  std::vector<double> x, y, u, v, p, rho, rho_sum, m;
   std::vector<std::int64_t> id;
   std::vector<std::int32_t> phase;
   explicit Particles(std::size_t n_) : n(n_) {
@@ -59,6 +59,7 @@ struct Particles {
       v.push_back(std::cos(k) * 1e-7);
       p.push_back(std::exp(0.3 * k) - 7.0);
       rho.push_back(1000.0 + 1.0 / (k + 1.0));
+      rho_sum.push_back(999.0 - 1.0 / (k + 3.0));
       m.push_back(1e-3 * (k + 0.5) / 3.0);
       id.push_back(1'000'000'000'000LL + 7 * static_cast<std::int64_t>(i));
       phase.push_back(static_cast<std::int32_t>(i % 3) - 1);
@@ -71,7 +72,7 @@ struct Particles {
     f.time = 0.25;
     f.x = x.data(), f.y = dimension >= 2 ? y.data() : nullptr;
     f.u = u.data(), f.v = dimension >= 2 ? v.data() : nullptr;
-    f.pressure = p.data(), f.density = rho.data(), f.mass = m.data();
+    f.pressure = p.data(), f.density = rho.data(), f.summation_density = rho_sum.data(), f.mass = m.data();
     f.id = id.data(), f.phase = phase.data();
     return f;
   }
@@ -90,6 +91,7 @@ double expected(const Particles& P, FieldId field, int dim, std::size_t i, int c
     case FieldId::velocity: return c == 0 ? P.u[i] : (c == 1 && dim >= 2 ? P.v[i] : 0.0);
     case FieldId::pressure: return P.p[i];
     case FieldId::density: return P.rho[i];
+    case FieldId::summation_density: return P.rho_sum[i];
     case FieldId::mass: return P.m[i];
     case FieldId::id: return static_cast<double>(P.id[i]);
     case FieldId::phase: return P.phase[i];
@@ -155,7 +157,7 @@ void check_vtp_round_trip(int dim) {
 TEST_CASE("output: the field table lists the INTERFACE.md arrays and renders as markdown") {
   std::vector<std::string> names;
   for (const auto& f : kOutputFields) names.emplace_back(f.name);
-  CHECK(names == std::vector<std::string>{"velocity", "pressure", "density", "mass", "id", "phase"});
+  CHECK(names == std::vector<std::string>{"velocity", "pressure", "density", "summation_density", "mass", "id", "phase"});
   const std::string md = output_fields_markdown();
   CHECK(md.rfind("| name | components | type | unit | description |\n|---|---|---|---|---|\n", 0) == 0);
   CHECK(md.find("| `velocity` | 3 | Float64 | m/s |") != std::string::npos);

@@ -133,6 +133,9 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     fr.pressure = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
                                                                               : f.p.data();
     fr.density = f.rho.data();
+    std::vector<double> rho_sum = number_density(f);  // Szewc eq. 21: m_a sum_b W_ab
+    for (std::size_t a = 0; a < f.n_real; ++a) rho_sum[a] *= f.m[a];
+    fr.summation_density = rho_sum.data();
     fr.mass = f.m.data();
     fr.id = model_.particles.id.data();
     fr.phase = model_.particles.phase.data();

@@ -15,6 +15,7 @@ struct Frame {
   const double* v = nullptr;
   const double* pressure = nullptr;
   const double* density = nullptr;
+  const double* summation_density = nullptr;  // m_a sum_b W_ab (Szewc eq. 21)
   const double* mass = nullptr;
   const std::int64_t* id = nullptr;
   const std::int32_t* phase = nullptr;

@@ -7,7 +7,7 @@
 namespace arksph {
 
 // Which field an entry describes; writers switch on it (-Wswitch flags a field left unhandled).
-enum class FieldId { velocity, pressure, density, mass, id, phase };
+enum class FieldId { velocity, pressure, density, summation_density, mass, id, phase };
 
 // Storage type of the written array (VTK XML type names).
 enum class FieldType { Float64, Int64, Int32 };
@@ -22,10 +22,12 @@ struct OutputField {
 };
 
 // Point-data arrays written into every VTP frame (INTERFACE.md "Point data in every VTP").
-inline constexpr std::array<OutputField, 6> kOutputFields{{
+inline constexpr std::array<OutputField, 7> kOutputFields{{
     {FieldId::velocity, "velocity", 3, FieldType::Float64, "m/s", "particle velocity (u, v, 0); 1D: (u, 0, 0)"},
     {FieldId::pressure, "pressure", 1, FieldType::Float64, "Pa", "pressure"},
     {FieldId::density, "density", 1, FieldType::Float64, "kg/m^3", "density"},
+    {FieldId::summation_density, "summation_density", 1, FieldType::Float64, "kg/m^3",
+     "m_a sum_b W_ab over all neighbours and ghosts (Szewc eq. 21); its spread is the density r.m.s. of eq. 56"},
     {FieldId::mass, "mass", 1, FieldType::Float64, "kg/m^(3-d)",
      "particle mass (per unit depth in 2D, per unit area in 1D)"},
     {FieldId::id, "id", 1, FieldType::Int64, "-", "particle id, stable across frames"},

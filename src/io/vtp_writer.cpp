@@ -64,10 +64,12 @@ vtkSmartPointer<vtkDataArray> field_array(const OutputField& fd, const Frame& f)
     }
     case FieldId::pressure:
     case FieldId::density:
+    case FieldId::summation_density:
     case FieldId::mass: {
-      const double* src = fd.field == FieldId::pressure  ? need(f.pressure, f, "pressure")
-                          : fd.field == FieldId::density ? need(f.density, f, "density")
-                                                         : need(f.mass, f, "mass");
+      const double* src = fd.field == FieldId::pressure            ? need(f.pressure, f, "pressure")
+                          : fd.field == FieldId::density           ? need(f.density, f, "density")
+                          : fd.field == FieldId::summation_density ? need(f.summation_density, f, "summation_density")
+                                                                   : need(f.mass, f, "mass");
       auto a = make_array<vtkDoubleArray>(fd.name, 1, n);
       if (n > 0) std::memcpy(a->GetPointer(0), src, f.n * sizeof(double));
       return a;

@@ -71,7 +71,7 @@ import matplotlib.image as mpimg
 import numpy as np
 
 frames_path, pics, fields = sys.argv[1], sys.argv[2], sys.argv[3].split()
-want_arrays = {"velocity", "pressure", "density", "mass", "id", "phase"}
+want_arrays = {"velocity", "pressure", "density", "summation_density", "mass", "id", "phase"}
 want_times = ["0", "0.1"]
 passed, failed = 0, 0
 

@@ -24,7 +24,7 @@ const char* kBatchUsage =
     "  2 for a bad sweep file (nothing is run).\n";
 
 const char* kStudyUsage =
-    "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...]\n"
+    "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
     "  Temporal order of ARKODE tables on one scene at fixed steps (see README, \"Order study\").\n"
     "  Writes <out>/order_errors.csv and <out>/order_fit.csv; exit 0 if every table is within the\n"
     "  tolerance of its nominal order, 4 if one is flagged, 2 for bad input.\n"
@@ -38,6 +38,30 @@ int parse_int(const std::string& opt, const std::string& v) {
   const long n = std::strtol(v.c_str(), &end, 10);
   if (end == v.c_str() || *end || n < 1 || n > 256) throw InputError(opt + " " + v + ": expected an integer in [1, 256]");
   return static_cast<int>(n);
+}
+// STUDY.toml [--out DIR] [--jobs N] [--set KEY=VALUE ...] [--quiet]; --jobs only for work-precision.
+StudyArgs parse_study_args(const std::string& kind, int argc, char** argv) {
+  StudyArgs args;
+  const bool takes_jobs = kind == "work-precision";
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if ((a == "--set" || a == "--out" || (takes_jobs && (a == "--jobs" || a == "-j"))) && i + 1 < argc) {
+      const std::string v = argv[++i];
+      if (a == "--set") args.sets.push_back(v);
+      else if (a == "--out") args.out = v;
+      else args.jobs = parse_int(a, v);
+    } else if (a == "--quiet" || a == "-q") {
+      args.quiet = true;
+    } else if (!a.empty() && a[0] == '-') {
+      throw InputError(a + ": unknown option or missing value (see arksph study --help)");
+    } else if (args.path.empty()) {
+      args.path = a;
+    } else {
+      throw InputError(a + ": more than one study file given");
+    }
+  }
+  if (args.path.empty()) throw InputError("study " + kind + ": missing the study file (see arksph study --help)");
+  return args;
 }
 }  // namespace
 
@@ -82,9 +106,10 @@ int cmd_study(int argc, char** argv) {
     return argc < 1 ? 2 : 0;
   }
   const std::string kind = argv[0];
-  if (kind == "order") return cmd_order_study(argc - 1, argv + 1);
-  if (kind == "work-precision") return cmd_work_precision_study(argc - 1, argv + 1);
-  throw InputError("study " + kind + ": unknown study (expected: order, work-precision)");
+  if (kind != "order" && kind != "work-precision")
+    throw InputError("study " + kind + ": unknown study (expected: order, work-precision)");
+  const StudyArgs args = parse_study_args(kind, argc - 1, argv + 1);
+  return kind == "order" ? cmd_order_study(args) : cmd_work_precision_study(args);
 }
 
 }  // namespace arksph

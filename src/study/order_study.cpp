@@ -244,28 +244,10 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
   return fits;
 }
 
-int cmd_order_study(int argc, char** argv) {
-  std::string path, out;
-  std::vector<std::string> sets;
-  bool quiet = false;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if ((a == "--set" || a == "--out") && i + 1 < argc) {
-      (a == "--set" ? sets.emplace_back() : out) = argv[++i];
-    } else if (a == "--quiet" || a == "-q") {
-      quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      throw InputError(a + ": unknown option or missing value (see arksph study --help)");
-    } else if (path.empty()) {
-      path = a;
-    } else {
-      throw InputError(a + ": more than one study file given");
-    }
-  }
-  if (path.empty()) throw InputError("study order: missing the study file (see arksph study --help)");
-  OrderStudy study = read_order_study(path, sets);
-  if (!out.empty()) study.output = out;
-  const auto fits = run_order_study(study, !quiet);
+int cmd_order_study(const StudyArgs& args) {
+  OrderStudy study = read_order_study(args.path, args.sets);
+  if (!args.out.empty()) study.output = args.out;
+  const auto fits = run_order_study(study, !args.quiet);
   fs::create_directories(study.output);
   const std::string err_csv = (fs::path(study.output) / "order_errors.csv").string();
   const std::string fit_csv = (fs::path(study.output) / "order_fit.csv").string();

@@ -29,6 +29,7 @@
 //   [dt_for]                                # optional per-table step lists
 //   ARKSPH_FORWARD_EULER_1_1 = [5e-4, 2.5e-4, 1.25e-4]
 #pragma once
+#include "study/study_args.hpp"
 #include <algorithm>
 #include <map>
 #include <string>
@@ -72,6 +73,6 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);
 // arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]: writes
 // <out>/order_errors.csv, <out>/order_fit.csv and, with python3 + matplotlib, <out>/order.png.
 // Exit 0, or 4 when a table is flagged.
-int cmd_order_study(int argc, char** argv);
+int cmd_order_study(const StudyArgs& args);
 
 }  // namespace arksph

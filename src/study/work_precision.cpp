@@ -256,40 +256,13 @@ void plot(const std::string& csv, const std::string& png, double target, const s
 }
 }  // namespace
 
-int cmd_work_precision_study(int argc, char** argv) {
-  std::string path, out;
-  std::vector<std::string> sets;
-  int jobs = 0;
-  bool quiet = false;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if ((a == "--set" || a == "--out" || a == "--jobs") && i + 1 < argc) {
-      const std::string v = argv[++i];
-      if (a == "--set") sets.push_back(v);
-      else if (a == "--out") out = v;
-      else {
-        char* end = nullptr;
-        const long n = std::strtol(v.c_str(), &end, 10);
-        if (end == v.c_str() || *end || n < 1 || n > 256) throw InputError("--jobs " + v + ": expected an integer in [1, 256]");
-        jobs = static_cast<int>(n);
-      }
-    } else if (a == "--quiet" || a == "-q") {
-      quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      throw InputError(a + ": unknown option or missing value (see arksph study --help)");
-    } else if (path.empty()) {
-      path = a;
-    } else {
-      throw InputError(a + ": more than one study file given");
-    }
-  }
-  if (path.empty()) throw InputError("study work-precision: missing the study file (see arksph study --help)");
-  WorkPrecisionStudy study = read_work_precision_study(path, sets);
-  if (!out.empty()) study.output = out;
-  if (jobs) study.jobs = jobs;
+int cmd_work_precision_study(const StudyArgs& args) {
+  WorkPrecisionStudy study = read_work_precision_study(args.path, args.sets);
+  if (!args.out.empty()) study.output = args.out;
+  if (args.jobs) study.jobs = args.jobs;
   const Sweep sweep = make_sweep(study);
   BatchOptions bo;
-  bo.quiet = quiet;
+  bo.quiet = args.quiet;
   const BatchResult batch = run_batch(sweep, bo);
 
   std::size_t first = 0;

@@ -38,6 +38,7 @@
 // /usr/bin/python3 + matplotlib <out>/work_precision.png (scripts/plot_work_precision.py).
 // Exit 0; 3 when the reference run failed or no run finished; 2 for a bad study file.
 #pragma once
+#include "study/study_args.hpp"
 #include <string>
 #include <vector>
 
@@ -71,6 +72,6 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
 double time_to_error(const std::vector<WorkPrecisionPoint>& curve, double target);
 
 // arksph study work-precision STUDY.toml [--out DIR] [--jobs N] [--set KEY=VALUE ...] [--quiet]
-int cmd_work_precision_study(int argc, char** argv);
+int cmd_work_precision_study(const StudyArgs& args);
 
 }  // namespace arksph

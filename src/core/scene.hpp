@@ -81,7 +81,7 @@ struct Scene {
   std::string projection_points = "step";  // isph: project after each "step" (C&R) | after each "stages" too
   double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
   int correction_max_iterations = 1;   // pozorski_wawrenczuk: Poisson solves per step at most
-  std::string correction_solver = "fixed_point";  // pozorski_wawrenczuk: "fixed_point" | "kinsol"
+  std::string correction_solver = "fixed_point";  // pozorski_wawrenczuk: "fixed_point" | "kinsol" | "newton"
 
   // [time]
   double end = 1.0;

@@ -73,7 +73,7 @@ centre_positions = true        # isph: positions centred in time, Cummins & Rudm
 projection_points = "step"     # isph: project after each "step" (C&R) | "stages": also after every ERK stage
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)
-correction_solver = "fixed_point"  # pozorski_wawrenczuk: "fixed_point" (linear solves) | "kinsol" (Newton, KLU)
+correction_solver = "fixed_point"  # pozorski_wawrenczuk: "fixed_point" (linear solves) | "kinsol" (Newton, KLU) | "newton" (exact Jacobian)
 
 [time]
 end = 2.0                      # final simulated time (> 0); a coarse start-up, a few seconds on 2 cores

@@ -307,7 +307,7 @@ void read_method(const Section& root, Scene& s) {
   s.correction_max_iterations = static_cast<int>(iters);
   // "fixed_point": repeated linear solves of eq. 58; "kinsol": KINSOL Newton on eq. 59 with the
   // Laplacian as frozen Jacobian (KLU)
-  s.correction_solver = m.one_of("correction_solver", {"fixed_point", "kinsol"}, s.correction_solver);
+  s.correction_solver = m.one_of("correction_solver", {"fixed_point", "kinsol", "newton"}, s.correction_solver);
 }
 
 void read_time_output(const Section& root, Scene& s) {

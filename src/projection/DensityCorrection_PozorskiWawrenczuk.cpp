@@ -5,6 +5,7 @@
 
 #include "kernels/kernel.hpp"
 #include "projection/correction_kinsol.hpp"
+#include "projection/correction_newton.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
@@ -15,7 +16,9 @@ DensityCorrection::DensityCorrection(const Scene& scene, RhsEvaluator& rhs)
       tolerance_(scene.ppe_tolerance),
       threshold_(scene.correction_threshold),
       max_iterations_(scene.correction_max_iterations),
-      use_kinsol_(scene.correction_solver == "kinsol") {}
+      use_kinsol_(scene.correction_solver == "kinsol"),
+      use_newton_(scene.correction_solver == "newton"),
+      spacing_(scene.spacing) {}
 
 double DensityCorrection::density_error(double t, const double* y) {
   rhs_.eval(t, y, nullptr);
@@ -45,6 +48,14 @@ void DensityCorrection::apply(double t, double* y) {
   double err = density_error(t, y);
   if (err <= threshold_) return;
   ++stats_.applications;
+  if (use_newton_) {
+    if (record) stats_.first_history.push_back(err);
+    const NewtonCorrectionResult r = correct_density_newton(rhs_, t, y, max_iterations_, threshold_, spacing_);
+    stats_.iterations += r.iterations;
+    if (record) stats_.first_history.push_back(r.error);
+    stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return;
+  }
   if (use_kinsol_) {
     if (record) stats_.first_history.push_back(err);
     double volume = 0;  // KINSOL's tolerance on max |F|, F ~ V x relative density fluctuation

@@ -45,6 +45,8 @@ class DensityCorrection {
   double threshold_;
   int max_iterations_;
   bool use_kinsol_;
+  bool use_newton_;
+  double spacing_;
   std::vector<double> pstar_;
   CorrectionStats stats_;
 };

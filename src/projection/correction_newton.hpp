@@ -1,0 +1,39 @@
+// The Pozorski-Wawrenczuk correction (Szewc et al. 2012 eqs. 57-59) as an inexact Newton iteration on
+// the summation density itself, with its exact derivative (method.correction_solver = "newton").
+//
+// Shifting the positions by dr_c = -(G p)_c / rho0_c (eq. 57, G the difference-form SPH gradient,
+// ghosts carrying their source's p) changes s_a = 1 - (m_a/rho0_a) sum_b W_ab to first order by
+//   ds = K p,  K = (m_a/rho0_a) sum_k D_k R G_k,  R = diag(1/rho0),
+// where D_k holds d(sum_b W_ab)/dr_c: F_ab r_ab,k on the diagonal and -F_ab M_b,kk r_ab,k in the
+// column of b's source (M_b = diag(flip_x, flip_y): +1, -1 across a wall, 0 held on it). This is
+// eq. 59's Taylor expansion without the further step to the approximate Laplacian of eq. 58; unlike
+// that Laplacian it keeps a particle's coupling to its own mirror image, which is what moves a
+// particle pressed against a wall. Each iteration solves K p = -(s - mean s) with a few BiCGSTAB
+// iterations (truncated Krylov: the odd-even modes in which K is nearly singular are not amplified),
+// and limits the largest shift to a fraction of the spacing.
+#pragma once
+#include <Eigen/SparseCore>
+
+#include "rhs/evaluator.hpp"
+
+namespace arksph {
+
+// The operators at the current fields (exposed for the finite-difference test of K).
+struct CorrectionOperators {
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> Gx, Gy;  // (G p)_a = sum_b V_b (p_src(b) - p_a) grad_a W_ab
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> K;       // ds/dp for the shift dr = -G p / rho0
+};
+CorrectionOperators correction_operators(const FluidFields& f);
+
+struct NewtonCorrectionResult {
+  int iterations = 0;        // Newton steps taken
+  long krylov_iterations = 0;
+  double error = 0;          // r.m.s. of s about its mean after the last step
+};
+
+// Shifts the positions in y (time t) in place; stops after max_iterations steps or once the r.m.s.
+// density error is at most `threshold`. error0: the error at entry (fields of y current).
+NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, double* y, int max_iterations,
+                                              double threshold, double spacing);
+
+}  // namespace arksph

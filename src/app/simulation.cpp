@@ -62,8 +62,11 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
 
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
+  std::vector<double> d0;
+  ParticleReorder reorder(scene, model);
+  if (scene.reorder_every > 0) reorder.sort(y0.data(), d0);  // t = 0 is a sync point (before the first f)
   rhs.eval(0.0, y0.data(), nullptr);
-  std::vector<double> d0 = number_density(rhs.fields());  // in the scene's order, as a run that never stopped
+  d0 = number_density(rhs.fields());  // at t = 0 in the t = 0 order, also on restart (bit-identical diagnostics)
   // Restart: the particles in the checkpoint's order (re-sorts, method.reorder_every); check the
   // checkpoint against the scene, and read the earlier output before RunOutput truncates it.
   if (options.restart) permute(d0, adopt_particle_order(model, options.restart->id));
@@ -89,8 +92,6 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     eo.initial_dt = checkpoints.restart().next_step;
     rhs.invalidate_neighbors();
   }
-  ParticleReorder reorder(scene, model);
-  if (scene.reorder_every > 0 && !checkpoints.restarting()) reorder.sort(y0.data(), d0);  // t = 0 is a sync point too
   const long diag_evals_before = rhs.evaluations();
   TimeStepper stepper = make_time_stepper(scene, rhs, eo, y0, checkpoints.start_time());
   TimeIntegrator& integrator = *stepper.integrator;

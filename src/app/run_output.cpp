@@ -173,6 +173,10 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   const double ppe = model_.projection ? model_.projection->stats().seconds : 0.0;
   timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);
   timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
+  if (reorders_ >= 0) {
+    timing.set("reorder", reorder_seconds_);
+    j.set("reorders", reorders_);
+  }
   // What is left: set-up, ARKODE's own vector work, state checks.
   // What is left: set-up, ARKODE's own vector work, state checks. (ppe includes its own neighbour
   // refresh, counted in neighbors and rhs too, so it is not subtracted.)

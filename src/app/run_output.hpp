@@ -26,6 +26,11 @@ class RunOutput {
               long wall_reflections, long neighbor_rebuilds);
   // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
   void resume(const OutputHistory& earlier);
+  // method.reorder_every: re-sorts that changed the order, and their time (summary.json).
+  void set_reorders(long count, double seconds) {
+    reorders_ = count;
+    reorder_seconds_ = seconds;
+  }
 
  private:
   std::vector<std::string> csv_columns() const;
@@ -40,6 +45,8 @@ class RunOutput {
   Json case_metrics_ = Json::object();
   double eps_max_window_ = 0;  // Poiseuille: max eps for t* in [0.5, 2]
   double output_seconds_ = 0, diagnostic_seconds_ = 0;
+  long reorders_ = -1;  // -1: re-sorting off
+  double reorder_seconds_ = 0;
 };
 
 }  // namespace arksph

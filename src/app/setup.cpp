@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/particle_order.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -12,6 +13,7 @@ namespace arksph {
 Model build_model(const Scene& scene) {
   Model model;
   model.particles = make_lattice(scene);
+  if (scene.shuffle_initial_order) permute(model.particles, shuffled_order(model.particles.n, 0x5eed));
   model.h = scene.h_over_dx * scene.spacing;
   Kernel kernel = make_kernel(scene.kernel, model.h, scene.dimension);
   for (int k = 0; k < scene.dimension; ++k) {

@@ -13,6 +13,7 @@
 #include "app/checkpointing.hpp"  // checkpoints and restart
 #include "app/interrupt.hpp"
 #include "app/output_resume.hpp"
+#include "app/particle_reorder.hpp"
 #include "app/progress.hpp"
 #include "app/run_output.hpp"
 #include "app/setup.hpp"
@@ -59,18 +60,22 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const StateLayout& layout = rhs.layout();
   print_run_header(scene, model);
 
-  // Restart: check the checkpoint against the scene, and read the earlier output before RunOutput truncates it.
+  std::vector<double> y0(layout.size());
+  rhs.initial_state(y0.data());
+  std::vector<double> d0;
+  ParticleReorder reorder(scene, model);
+  if (scene.reorder_every > 0) reorder.sort(y0.data(), d0);  // t = 0 is a sync point (before the first f)
+  rhs.eval(0.0, y0.data(), nullptr);
+  d0 = number_density(rhs.fields());  // at t = 0 in the t = 0 order, also on restart (bit-identical diagnostics)
+  // Restart: the particles in the checkpoint's order (re-sorts, method.reorder_every); check the
+  // checkpoint against the scene, and read the earlier output before RunOutput truncates it.
+  if (options.restart) permute(d0, adopt_particle_order(model, options.restart->id));
   Checkpointer checkpoints(scene, model, options.restart, options.restart_path);
   const OutputHistory earlier = checkpoints.restarting() ? read_output_history(scene.directory, checkpoints.start_time(),
                                                                                checkpoints.restart().output_frame)
                                                          : OutputHistory{};
   RunOutput out(scene, model, options);  // creates the directory, CSV; throws InputError if unwritable
   if (checkpoints.restarting()) out.resume(earlier);
-
-  std::vector<double> y0(layout.size());
-  rhs.initial_state(y0.data());
-  rhs.eval(0.0, y0.data(), nullptr);
-  const std::vector<double> d0 = number_density(rhs.fields());
 
   ErkOptions eo = integrator_options(scene);
   eo.stability = [&](double, const double* y) {
@@ -118,6 +123,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
           reflections += r;
           integrator.reset(t);
         }
+        if (reorder.due(st.steps)) reorder.apply(t, integrator, d0, stepper.split.get());  // sync point: particles by cell
         checker.check(t, integrator.state());
         if (st.steps >= scene.max_steps)
           throw NumericalFailure("time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " +
@@ -149,6 +155,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   progress.finish();
   const ErkStats st = integrator.stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
+  if (scene.reorder_every > 0) out.set_reorders(reorder.count(), reorder.seconds());
   out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
   return result;
 }

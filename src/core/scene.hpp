@@ -44,6 +44,7 @@ struct Scene {
   double density = 1.0;
   double viscosity = 0.01;  // kinematic nu
   std::vector<std::string> body_force{"0", "0"};
+  bool shuffle_initial_order = false;  // particles in a fixed pseudo-random memory order at t = 0 (benchmarks)
 
   // [initial]
   std::vector<std::string> initial_velocity{"0", "0"};
@@ -78,6 +79,7 @@ struct Scene {
   double gpps_spacing = 0.0;           // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing
   double gpps_volume_relaxation = 0.0; // isph-gpps: beta of the cell-volume source term (0: off, Szewc's GPPS)
   bool centre_positions = true;        // isph: positions centred in time (C&R eq. 12)
+  long reorder_every = 100;  // re-sort particles by cell at t = 0 and every this many steps (0: never)
   std::string projection_points = "step";  // isph: project after each "step" (C&R) | after each "stages" too
   double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
   int correction_max_iterations = 1;   // pozorski_wawrenczuk: Poisson solves per step at most

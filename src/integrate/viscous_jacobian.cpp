@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "boundary/ghosts.hpp"
+#include "integrate/dependency_pattern.hpp"
 
 namespace arksph {
 
@@ -40,18 +41,12 @@ void ViscousJacobian::build_pattern() {
   const bool two_d = f.dim == 2;
   ref_x_.assign(f.x.begin(), f.x.begin() + n);
   ref_y_.assign(two_d ? f.y.begin() : f.x.begin(), two_d ? f.y.begin() + n : f.x.begin());
-  const double r2 = (radius_ + skin_) * (radius_ + skin_);
-  auto gap = [&](double d, int k) {
-    if (periodic_[k]) d -= len_[k] * std::round(d / len_[k]);  // minimum image
-    return d;
-  };
-  pat_.assign(n, {});
-  for (std::size_t a = 0; a < n; ++a) {
-    for (std::size_t b = 0; b < n; ++b) {
-      const double dx = gap(f.x[a] - f.x[b], 0), dy = two_d ? gap(f.y[a] - f.y[b], 1) : 0.0;
-      if (dx * dx + dy * dy <= r2) pat_[a].push_back(static_cast<std::uint32_t>(b));
-    }
+  PeriodicAxes axes;
+  for (int k = 0; k < 2; ++k) {
+    axes.periodic[k] = periodic_[k];
+    axes.len[k] = len_[k];
   }
+  pat_ = dependency_pattern(f.x.data(), two_d ? f.y.data() : nullptr, n, radius_ + skin_, axes);
   // Greedy distance-2 colouring: two columns share a colour only if no row holds both.
   color_.assign(n, -1);
   std::vector<std::size_t> stamp(n + 1, n);  // stamp[c] == j: colour c is taken for column j

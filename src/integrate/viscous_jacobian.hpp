@@ -15,7 +15,7 @@
 // the wall in its bin (up to 3 dx from the wall, 1 dx along it), so R_dep = |(R_s + dx, max(R_s, 3 dx))|.
 // The pattern, the colouring and J's sparsity are rebuilt only when a particle has moved more than
 // skin / 2 = dx / 4 since the last build (a Verlet rule); between rebuilds the pattern, and so the
-// KLU symbolic analysis, stay the same. Pattern build: O(n^2) distance tests (fine up to ~10^4).
+// KLU symbolic analysis, stay the same. Pattern build: a cell-list search (dependency_pattern.hpp).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -34,6 +34,9 @@ class ViscousJacobian {
   int colors() const { return ncolors_; }
   long pattern_builds() const { return builds_; }
   double dependency_radius() const { return radius_; }
+  // Forces a new pattern (and so a new KLU symbolic analysis) at the next evaluate(): after the
+  // particles were re-ordered, when the old pattern's indices name other particles.
+  void invalidate() { ref_x_.clear(); }
 
  private:
   bool pattern_stale() const;

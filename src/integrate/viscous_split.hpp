@@ -26,6 +26,13 @@ class ViscousSplit {
   const SparseCsr& jacobian(double t, const double* y);
   ImexFunctions functions();
   const ViscousJacobian& jacobian_builder() const { return jac_; }
+  // Drops every cached evaluation and the Jacobian pattern (the particles were re-ordered).
+  void forget() {
+    valid_ = false;
+    jac_last_ = nullptr;
+    jac_y_.clear();
+    jac_.invalidate();
+  }
 
  private:
   bool frozen_equal(const double* y, const std::vector<double>& ref) const;

@@ -34,6 +34,7 @@ spacing = 0.03333333333333333  # initial lattice spacing dx = 1/30 (must divide 
 density = 1.0                  # reference density rho0 (> 0)
 viscosity = 0.01               # kinematic viscosity nu (>= 0): Re = 1 * 1 / 0.01 = 100
 body_force = ["0", "0"]        # acceleration g(x, y, t), one expression per dimension
+shuffle_initial_order = false  # true: particles stored in a fixed pseudo-random order (ids kept): benchmarks of a mixed run
 
 [initial]
 velocity = ["0", "0"]          # initial velocity u(x, y), one expression per dimension
@@ -71,6 +72,7 @@ gpps_spacing = 0              # isph-gpps: cell size of the auxiliary Poisson gr
 gpps_volume_relaxation = 0     # isph-gpps: beta in [0, 1] of the source term -beta (phi - 1)/dt^2, phi = particle volume per cell / cell volume (0: off)
 centre_positions = true        # isph: positions centred in time, Cummins & Rudman eq. 12
 projection_points = "step"     # isph: project after each "step" (C&R) | "stages": also after every ERK stage
+reorder_every = 100            # re-sort the particles by cell (grid of side = kernel support) at t = 0 and every this many steps (>= 0; 0: never)
 correction_threshold = 1e-3    # pozorski_wawrenczuk: r.m.s. relative density error that triggers it (>= 0)
 correction_max_iterations = 1  # pozorski_wawrenczuk: correction solves per step at most (Szewc: 1)
 correction_solver = "fixed_point"  # pozorski_wawrenczuk: "fixed_point" (linear solves) | "kinsol" (Newton, KLU) | "newton" (exact Jacobian)

@@ -191,7 +191,7 @@ void read_boundary(const Section& root, Scene& s) {
 void read_fluid(const Section& root, Scene& s) {
   const std::size_t dim = s.dimension;
   const std::vector<std::string> zeros(dim, "0");
-  const Section f = root.section("fluid", {"spacing", "density", "viscosity", "body_force"});
+  const Section f = root.section("fluid", {"spacing", "density", "viscosity", "body_force", "shuffle_initial_order"});
   s.spacing = f.number("spacing", std::nullopt);  // initial lattice spacing dx
   f.require(s.spacing > 0, "spacing", "> 0", s.spacing);
   for (std::size_t d = 0; d < dim; ++d) check_lattice(f, s.spacing, s.max[d] - s.min[d], d);
@@ -205,6 +205,8 @@ void read_fluid(const Section& root, Scene& s) {
   s.viscosity = f.number("viscosity", s.viscosity);  // kinematic viscosity nu
   f.require(s.viscosity >= 0, "viscosity", ">= 0", s.viscosity);
   s.body_force = f.expressions("body_force", dim, {"x", "y", "t"}, zeros);  // acceleration g(x, y, t)
+  // Particles stored in a fixed pseudo-random order (ids kept): the memory order of a long mixed run
+  s.shuffle_initial_order = f.boolean("shuffle_initial_order", s.shuffle_initial_order);
 
   const Section init = root.section("initial", {"velocity", "offset"});
   s.initial_velocity = init.expressions("velocity", dim, {"x", "y"}, zeros);  // u(x, y, 0)
@@ -233,7 +235,7 @@ void read_method(const Section& root, Scene& s) {
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
                                             "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_pressure_offset", "neighbor_storage", "ppe_tolerance", "gpps_spacing", "gpps_volume_relaxation", "centre_positions", "projection_points", "correction_threshold",
-                                            "correction_max_iterations", "correction_solver",
+                                            "correction_max_iterations", "correction_solver", "reorder_every",
                                             "cleary_xi", "kernel_correction", "pressure_reduction",
                                             "equation_of_state", "gas_gamma"});
   s.scheme = m.registered("scheme", "scheme", s.scheme);
@@ -298,6 +300,9 @@ void read_method(const Section& root, Scene& s) {
   s.centre_positions = m.boolean("centre_positions", s.centre_positions);
   // "step": project after each accepted step (C&R); "stages": also every ERK stage z_i, i >= 2
   s.projection_points = m.one_of("projection_points", {"step", "stages"}, s.projection_points);
+  // Re-sort the particles by cell (kernel-support grid, row-major) every this many steps; 0: never
+  s.reorder_every = m.integer("reorder_every", s.reorder_every);
+  m.require(s.reorder_every >= 0, "reorder_every", ">= 0", static_cast<double>(s.reorder_every));
   // Pozorski-Wawrenczuk correction (Szewc §9): trigger threshold and iterations per step.
   s.correction_threshold = m.number("correction_threshold", s.correction_threshold);
   m.require(s.correction_threshold >= 0, "correction_threshold", ">= 0", s.correction_threshold);

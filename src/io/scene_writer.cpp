@@ -68,7 +68,8 @@ std::string scene_to_toml(const Scene& s) {
     << "spacing = " << num(s.spacing) << "\n"
     << "density = " << num(s.density) << "\n"
     << "viscosity = " << num(s.viscosity) << "\n"
-    << "body_force = " << strings(s.body_force) << "\n\n";
+    << "body_force = " << strings(s.body_force) << "\n"
+    << "shuffle_initial_order = " << boolean(s.shuffle_initial_order) << "\n\n";
   o << "[initial]\n"
     << "velocity = " << strings(s.initial_velocity) << "\n"
     << "offset = " << strings(s.initial_offset) << "\n\n";
@@ -103,6 +104,7 @@ std::string scene_to_toml(const Scene& s) {
     << "gpps_volume_relaxation = " << num(s.gpps_volume_relaxation) << "\n"
     << "centre_positions = " << boolean(s.centre_positions) << "\n"
     << "projection_points = " << quote(s.projection_points) << "\n"
+    << "reorder_every = " << s.reorder_every << "\n"
     << "correction_threshold = " << num(s.correction_threshold) << "\n"
     << "correction_max_iterations = " << s.correction_max_iterations << "\n"
     << "correction_solver = " << quote(s.correction_solver) << "\n\n";

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/particle_order.hpp"
 #include "kernels/kernel.hpp"
 #include "projection/correction_kinsol.hpp"
 #include "projection/correction_newton.hpp"
@@ -40,6 +41,8 @@ double DensityCorrection::density_error(double t, const double* y) {
   for (double r : rel) s += (r - mean) * (r - mean);
   return std::sqrt(s / static_cast<double>(n));
 }
+
+void DensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) { permute(pstar_, from); }
 
 void DensityCorrection::apply(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();

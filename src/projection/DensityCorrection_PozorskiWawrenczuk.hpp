@@ -32,6 +32,8 @@ class DensityCorrection {
   // Corrects the positions in y (time t) in place.
   void apply(double t, double* y);
   const CorrectionStats& stats() const { return stats_; }
+  // The particles re-ordered: the warm start p* follows (new index i is old index from[i]).
+  void permute_particles(const std::vector<std::uint32_t>& from);
   void forget_warm_start() {
     pstar_.clear();
     solver_ = make_poisson_solver(solver_->name(), tolerance_);

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "core/errors.hpp"
+#include "core/particle_order.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
@@ -33,6 +34,13 @@ void Projection::forget_warm_start() {
   solution_.clear();
   solver_ = make_poisson_solver(solver_->name(), tolerance_);
   if (correction_) correction_->forget_warm_start();
+}
+
+void Projection::permute_particles(const std::vector<std::uint32_t>& from) {
+  permute(pressure_, from);
+  permute(solution_, from);
+  if (y_prev_.size() == rhs_.layout().size()) permute_state(rhs_.layout(), y_prev_.data(), from);
+  if (correction_) correction_->permute_particles(from);
 }
 
 void Projection::begin_step(double t, const double* y) {

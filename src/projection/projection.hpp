@@ -47,6 +47,9 @@ class Projection {
   // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
   // factorisation), so that a run restarted from a checkpoint continues bit for bit.
   void forget_warm_start();
+  // The particles re-ordered (RhsEvaluator::permute_particles): the warm starts and the last
+  // pressure follow (new index i is old index from[i]).
+  void permute_particles(const std::vector<std::uint32_t>& from);
 
  private:
   void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment

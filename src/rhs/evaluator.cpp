@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/particle_order.hpp"
+
 namespace arksph {
 
 namespace {
@@ -53,6 +55,14 @@ std::vector<std::string> RhsEvaluator::term_names() const {
   std::vector<std::string> names;
   for (const auto& t : terms_) names.push_back(t->name());
   return names;
+}
+
+void RhsEvaluator::permute_particles(const std::vector<std::uint32_t>& from) {
+  permute(particles_, from);
+  permute(fields_.rho0, from);
+  permute(visc_u_, from);  // IMEX f_I of the last eval, in the new order
+  permute(visc_v_, from);
+  invalidate_neighbors();
 }
 
 void RhsEvaluator::initial_state(double* y) const {

@@ -42,6 +42,10 @@ class RhsEvaluator {
   // Forces a fresh ghost set and candidate list at the next eval, as after a restart from a
   // checkpoint: called at every checkpoint so that a restarted run sums pairs in the same order.
   void invalidate_neighbors() { ref_x_.clear(); }
+  // The particles re-ordered (core/particle_order.hpp: new index i is old index from[i]): the
+  // constant per-particle data follow, the neighbour list and ghosts are rebuilt at the next eval.
+  // The state vector is the caller's to permute; fields() are stale until the next eval.
+  void permute_particles(const std::vector<std::uint32_t>& from);
   const RhsTiming& timing() const { return timing_; }
 
   // IMEX (time.imex): with `on`, eval() leaves the viscous terms out of ydot (f_E) and keeps their

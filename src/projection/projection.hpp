@@ -18,6 +18,7 @@
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
+#include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
@@ -65,6 +66,7 @@ class Projection {
   std::vector<double> y_prev_;
   std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)
   std::vector<double> solution_;  // the Poisson solver's solution (P_0 = 0): the next warm start
+  PoissonSystem system_;          // the last PPE, kept for its storage
   std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   ProjectionStats stats_;

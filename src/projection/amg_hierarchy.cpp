@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <cstdio>
-#include <cstdlib>
 
 #include "core/errors.hpp"
 
@@ -156,15 +154,6 @@ void AmgHierarchy::setup(const CsrRef& A) {
     coarse_.emplace_back();
     build_level(l, nc);
   }
-  finish();
-  if (std::getenv("AMG_VERBOSE"))
-    for (int l = 0; l < levels(); ++l) fprintf(stderr, "level %d n %d nnz %ld\n", l, size(l), nonzeros(l));
-}
-
-void AmgHierarchy::refresh(const CsrRef& A) {
-  if (A.n != A0_.n) throw std::logic_error("AmgHierarchy::refresh: size changed");
-  A0_ = A;
-  for (int l = 0; l + 1 < levels(); ++l) build_level(l, coarse_[l].n);
   finish();
 }
 

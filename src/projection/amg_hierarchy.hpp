@@ -61,14 +61,11 @@ struct AmgOptions {
 class AmgHierarchy {
  public:
   explicit AmgHierarchy(AmgOptions opt = {}) : opt_(opt) {}
-  // Builds aggregates, prolongators and coarse operators for A (which must outlive the hierarchy's
-  // use or be replaced by refresh()).
+  // Builds aggregates, prolongators and coarse operators for A. A's arrays are read by vcycle():
+  // they must outlive its use, or be replaced by rebind_finest().
   void setup(const CsrRef& A);
-  // Keeps the aggregates and prolongators, recomputes the operators (Galerkin products, smoother
-  // bounds, coarsest factorisation) for a new matrix with the same size.
-  void refresh(const CsrRef& A);
   // Keeps everything but points the finest level at A (same size): coarse operators stay those of
-  // the matrix of the last setup/refresh.
+  // the matrix of the last setup.
   void rebind_finest(const CsrRef& A);
   // z = M r: one V-cycle from a zero initial guess.
   void vcycle(const double* r, double* z) const;

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <numeric>
 
 #include "core/errors.hpp"
@@ -88,11 +86,9 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout& L = rhs_.layout();
   const std::size_t n = L.n;
-  const auto ta = std::chrono::steady_clock::now();
   if (exact_operator_) system_ = assemble_ppe_exact(f, div, dt);
   else assemble_ppe(f, div, dt, system_);
   const PoissonSystem& sys = system_;
-  if (std::getenv("AMG_VERBOSE")) fprintf(stderr, "assembly %.4f s\n", since(ta));
   if (solution_.size() != n) solution_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (P_0 = 0) as the next warm start: a start

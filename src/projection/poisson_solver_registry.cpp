@@ -18,7 +18,7 @@ std::unique_ptr<PoissonSolver> make_poisson_solver(const std::string& name, doub
   if (name == "cg") return make_poisson_solver_cg(tolerance);
   if (name == "cg_ic") return make_poisson_solver_cg_ic(tolerance);
   if (name == "cg_amg") return make_poisson_solver_cg_amg(tolerance);
-  if (name == "auto") return make_poisson_solver_auto(tolerance);  // by size: KLU up to 1,000 unknowns, else CG
+  if (name == "auto") return make_poisson_solver_auto(tolerance);  // by size: KLU up to 400 unknowns, else cg_amg
   throw std::out_of_range("unknown Poisson solver '" + name + "'");
 }
 

@@ -25,8 +25,9 @@ namespace arksph {
 
 struct ProjectionStats {
   long solves = 0;
-  double seconds = 0;           // assembly + solve + correction
+  double seconds = 0;           // right-hand side at r* + assembly + solve + correction
   double solve_seconds = 0;     // the linear solve alone
+  double assembly_seconds = 0;  // divergence, source and matrix of the particle PPE
   double last_residual = 0, max_residual = 0;
   long iterations = 0, symbolic_analyses = 0;  // isph-gpps: symbolic_analyses counts grid factorisations
 };

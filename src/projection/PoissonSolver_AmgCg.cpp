@@ -31,6 +31,7 @@ class PoissonSolverAmgCg final : public PoissonSolver {
   explicit PoissonSolverAmgCg(double tolerance) : tolerance_(tolerance) {}
   std::string name() const override { return "cg_amg"; }
 
+  // rep.refactored_symbolic: the hierarchy was (re)built for this solve.
   SolveReport solve(const SparseMatrix& A, const std::vector<double>& b, std::vector<double>& p) override {
     const CsrRef view = csr_view(A);
     const int n = view.n;
@@ -49,7 +50,7 @@ class PoissonSolverAmgCg final : public PoissonSolver {
     rep.iterations = pcg(view, b.data(), p.data(), rep.relative_residual);
     ++solves_since_setup_;
     if (baseline_ < 0) baseline_ = rep.iterations;
-    else if (rep.iterations > kGrowth * std::max(baseline_, 1)) must_rebuild_ = true;
+    else if (rep.iterations > std::max(kGrowth * baseline_, baseline_ + 2.0)) must_rebuild_ = true;  // +2: not on noise of small counts
     return rep;
   }
 

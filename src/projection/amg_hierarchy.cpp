@@ -10,7 +10,7 @@
 namespace arksph {
 
 namespace {
-constexpr int kParallelMin = 4096;  // rows below which loops stay serial (thread start-up dominates)
+constexpr int kParallelMin = 20000;  // rows below which loops stay serial (thread wake-up dominates)
 
 // C = A B (A: A.n rows, B: ncols columns), columns unsorted within a row. Two passes (count, fill),
 // rows in parallel, one marker array per thread.
@@ -125,6 +125,15 @@ void csr_multiply(const CsrRef& A, const double* x, double* y) {
   }
 }
 
+void csr_residual(const CsrRef& A, const double* b, const double* x, double* r) {
+#pragma omp parallel for schedule(static) if (A.n > kParallelMin)
+  for (int i = 0; i < A.n; ++i) {
+    double s = b[i];
+    for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k) s -= A.val[k] * x[A.col[k]];
+    r[i] = s;
+  }
+}
+
 CsrRef csr_view(const SparseMatrix& S) {
   if (!S.isCompressed()) throw std::logic_error("csr_view: matrix not compressed");
   return {static_cast<int>(S.rows()), S.outerIndexPtr(), S.innerIndexPtr(), S.valuePtr()};
@@ -226,13 +235,8 @@ void AmgHierarchy::smooth(int l, const double* b, double* x, bool zero_guess) co
   const double hi = 1.1 * rho_[l], lo = opt_.cheb_lower * hi;
   const double theta = 0.5 * (hi + lo), delta = 0.5 * (hi - lo), sigma = theta / delta;
   double rho_old = 1.0 / sigma;
-  if (zero_guess) {
-    std::copy(b, b + n, r);
-  } else {
-    csr_multiply(A, x, t);
-#pragma omp parallel for schedule(static) if (n > kParallelMin)
-    for (int i = 0; i < n; ++i) r[i] = b[i] - t[i];
-  }
+  if (zero_guess) std::copy(b, b + n, r);
+  else csr_residual(A, b, x, r);
 #pragma omp parallel for schedule(static) if (n > kParallelMin)
   for (int i = 0; i < n; ++i) {
     d[i] = inv_d[i] * r[i] / theta;
@@ -264,9 +268,7 @@ void AmgHierarchy::cycle(int l, const double* b, double* x) const {
   const int n = A.n;
   smooth(l, b, x, true);
   double* r = r_[l].data();
-  csr_multiply(A, x, r);
-#pragma omp parallel for schedule(static) if (n > kParallelMin)
-  for (int i = 0; i < n; ++i) r[i] = b[i] - r[i];
+  csr_residual(A, b, x, r);
   csr_multiply(restrict_[l].ref(), r, b_[l + 1].data());
   cycle(l + 1, b_[l + 1].data(), x_[l + 1].data());
   const CsrRef P = prolong_[l].ref();

@@ -49,8 +49,10 @@ struct CsrOwned {
   CsrRef ref() const { return {n, ptr.data(), col.data(), val.data()}; }
 };
 
-// y = A x, rows in parallel.
+// y = A x and r = b - A x, rows in parallel (above 20,000 rows: below, waking the threads costs
+// more than the work on a loaded machine).
 void csr_multiply(const CsrRef& A, const double* x, double* y);
+void csr_residual(const CsrRef& A, const double* b, const double* x, double* r);
 // The symmetric matrix S (column-major, both triangles stored) read as rows of S^T = S.
 CsrRef csr_view(const SparseMatrix& S);
 

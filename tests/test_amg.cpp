@@ -44,11 +44,12 @@ Scene scene_of(const std::string& text, const std::vector<std::string>& sets) {
   return read_scene_text(text, "<test>", sets, warnings);
 }
 
-Scene periodic_scene(double spacing, const std::string& extra = "method.kernel=wendland_quintic") {
-  return scene_of(testing::kTaylorGreenBox + "[time]\nend = 0.01\ndt = 0.01\n",
-                  {"method.scheme=isph", "fluid.spacing=" + std::to_string(spacing),
-                   "initial.velocity=[\"sin(2*pi*x)*cos(2*pi*y) + 0.2*sin(4*pi*y)\", \"-cos(2*pi*x)*sin(2*pi*y) + 0.1*x*(1-x)\"]",
-                   extra});
+Scene periodic_scene(double spacing, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> sets = {"method.scheme=isph", "fluid.spacing=" + std::to_string(spacing),
+                                   "initial.velocity=[\"sin(2*pi*x)*cos(2*pi*y) + 0.2*sin(4*pi*y)\", "
+                                   "\"-cos(2*pi*x)*sin(2*pi*y) + 0.1*x*(1-x)\"]"};
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  return scene_of(testing::kTaylorGreenBox + "[time]\nend = 0.01\ndt = 0.01\n", sets);
 }
 
 PoissonSystem system_of(const Scene& scene) {
@@ -183,7 +184,7 @@ TEST_CASE("cg_amg: far fewer iterations than Jacobi CG at N = 10^4") {
 // answer must still be KLU's to the 1e-8 of the first test case, with no rebuild.
 TEST_CASE("cg_amg: a hierarchy kept from an earlier matrix still gives the exact pressure") {
   const PoissonSystem first = system_of(periodic_scene(0.02));
-  const PoissonSystem second = system_of(periodic_scene(0.02, "method.h_over_dx=1.7"));
+  const PoissonSystem second = system_of(periodic_scene(0.02, {"method.h_over_dx=1.7"}));
   REQUIRE(first.b.size() == second.b.size());
   auto amg = make_poisson_solver("cg_amg", 1e-12);
   std::vector<double> p(first.b.size(), 0.0), p_klu(first.b.size(), 0.0);
@@ -195,4 +196,15 @@ TEST_CASE("cg_amg: a hierarchy kept from an earlier matrix still gives the exact
   CHECK_FALSE(r.refactored_symbolic);
   CHECK(r.relative_residual < 1e-11);
   CHECK(diff <= 1e-8);
+}
+
+// "auto": KLU (one direct solve, reported as 1 iteration) up to 400 unknowns, cg_amg above.
+TEST_CASE("auto: KLU for a small system, cg_amg for a large one") {
+  const PoissonSystem small = system_of(scene_of(kWalledBox, {}));  // N = 100
+  const PoissonSystem large = system_of(scene_of(kWalledBox, {"fluid.spacing=0.02"}));  // N = 2,500
+  std::vector<double> p_small(small.b.size(), 0.0), p_large(large.b.size(), 0.0);
+  CHECK(make_poisson_solver("auto", 1e-10)->solve(small.A, small.b, p_small).iterations == 1);
+  const SolveReport r = make_poisson_solver("auto", 1e-10)->solve(large.A, large.b, p_large);
+  CHECK(r.iterations > 1);
+  CHECK(r.relative_residual < 1e-10);
 }

@@ -84,7 +84,10 @@ std::vector<double> inverse_diagonal(const CsrRef& A) {
 #pragma omp parallel for schedule(static) if (A.n > kParallelMin)
   for (int i = 0; i < A.n; ++i)
     for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
-      if (A.col[k] == i) d[i] = 1.0 / A.val[k];
+      if (A.col[k] == i) {
+        d[i] = 1.0 / A.val[k];
+        break;  // one diagonal entry a row (duplicates merged)
+      }
   for (double v : d)
     if (!(v > 0) || !std::isfinite(v)) throw NumericalFailure("cg_amg: matrix diagonal not positive");
   return d;

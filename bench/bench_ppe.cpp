@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.hpp"
+#include "projection/amg_hierarchy.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 
@@ -15,9 +16,10 @@ constexpr double kDt = 1e-3;
 void BM_PpeAssembly(benchmark::State& state) {
   Prepared p = prepare(static_cast<int>(state.range(0)), "isph");
   const FluidFields& f = p.model.rhs->fields();
+  PoissonSystem sys;  // reused, as in a running simulation
   for (auto _ : state) {
     const auto div = divergence_cummins_rudman(f);
-    PoissonSystem sys = assemble_ppe(f, div, kDt);
+    assemble_ppe(f, div, kDt, sys);
     benchmark::DoNotOptimize(sys.b.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<long>(f.n_real));
@@ -48,13 +50,50 @@ void BM_Solve(benchmark::State& state, const std::string& solver, bool fresh) {
   state.counters["N"] = static_cast<double>(f.n_real);
 }
 
+// Setup of the aggregation AMG hierarchy of "cg_amg" (aggregates, prolongators, Galerkin products,
+// smoother bounds, coarsest Cholesky): paid once per rebuild, not per solve.
+void BM_AmgSetup(benchmark::State& state) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "isph");
+  const FluidFields& f = p.model.rhs->fields();
+  const PoissonSystem sys = assemble_ppe(f, divergence_cummins_rudman(f), kDt);
+  AmgHierarchy amg;
+  for (auto _ : state) amg.setup(csr_view(sys.A));
+  long nnz = 0;
+  for (int l = 0; l < amg.levels(); ++l) nnz += amg.nonzeros(l);
+  state.counters["levels"] = amg.levels();
+  state.counters["coarse1"] = amg.levels() > 1 ? amg.size(1) : 0;
+  state.counters["op_complexity"] = static_cast<double>(nnz) / static_cast<double>(amg.nonzeros(0));
+  state.counters["N"] = static_cast<double>(f.n_real);
+}
+
+// The parts of one cg_amg iteration: a product with the PPE matrix, and one V-cycle.
+void BM_AmgParts(benchmark::State& state, bool vcycle) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "isph");
+  const FluidFields& f = p.model.rhs->fields();
+  const PoissonSystem sys = assemble_ppe(f, divergence_cummins_rudman(f), kDt);
+  AmgHierarchy amg;
+  amg.setup(csr_view(sys.A));
+  std::vector<double> z(sys.b.size());
+  for (auto _ : state) {
+    if (vcycle) amg.vcycle(sys.b.data(), z.data());
+    else csr_multiply(csr_view(sys.A), sys.b.data(), z.data());
+    benchmark::DoNotOptimize(z.data());
+  }
+  state.counters["nnz"] = static_cast<double>(sys.A.nonZeros());
+}
+
 BENCHMARK(BM_PpeAssembly)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Solve, klu_fresh, std::string("klu"), true)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Solve, klu_same_pattern, std::string("klu"), false)->Arg(50)->Arg(100)->Arg(240)->Unit(benchmark::kMillisecond);
 // N = 2,500 ... 250,000 for the iterative solvers (KLU above 57,600 takes minutes per factorisation).
 BENCHMARK_CAPTURE(BM_Solve, cg_warm, std::string("cg"), false)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Solve, cg_ic_warm, std::string("cg_ic"), false)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, cg_amg_warm, std::string("cg_amg"), false)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_AmgParts, spmv, false)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_AmgParts, vcycle, true)->Arg(240)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AmgSetup)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Solve, cg_cold, std::string("cg"), true)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, cg_amg_cold, std::string("cg_amg"), true)->Arg(50)->Arg(100)->Arg(240)->Arg(500)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace arksph::bench

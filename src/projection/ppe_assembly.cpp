@@ -46,18 +46,38 @@ std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<doub
 }
 
 PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt) {
+  PoissonSystem sys;
+  assemble_ppe(f, divergence, dt, sys);
+  return sys;
+}
+
+void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, PoissonSystem& sys) {
   const std::size_t n = f.n_real;
   const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
-  PoissonSystem sys;
   // Source: zero mean, scaled like the rows.
   const double mean = std::accumulate(divergence.begin(), divergence.end(), 0.0) / static_cast<double>(n);
   sys.b.resize(n);
   for (std::size_t a = 0; a < n; ++a) sys.b[a] = -(f.m[a] / f.rho[a]) * (divergence[a] - mean) / dt;
   sys.b[0] = 0.0;
-  // Matrix: per row, accumulate the off-diagonal coefficients by source column.
-  std::vector<Eigen::Triplet<double, int>> trip;
-  trip.reserve(n + f.pairs.total());
+  // Matrix, built in compressed form without triplets: row a holds its coefficients by source
+  // column, several (periodic or wall) images of one source merged. A is symmetric, so row a is
+  // stored as column a of the column-major matrix (A^T, equal to A up to round-off). Each row gets
+  // room for its pair count plus the diagonal, is filled, sorted by column and merged in place
+  // (rows in parallel); makeCompressed() then closes the gaps. The storage of sys.A is reused.
+  SparseMatrix& A = sys.A;
+  A.resize(static_cast<long>(n), static_cast<long>(n));
+  Eigen::VectorXi room(static_cast<long>(n));
+  for (std::size_t a = 0; a < n; ++a) room[static_cast<long>(a)] = static_cast<int>(f.pairs.count[a]) + 1;
+  A.reserve(room);
+  const int* start = A.outerIndexPtr();
+  int* used = A.innerNonZeroPtr();
+  int* inner = A.innerIndexPtr();
+  double* value = A.valuePtr();
+#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t a = 0; a < n; ++a) {
+    int* col = inner + start[a];
+    double* val = value + start[a];
+    int len = 0;
     const double va = f.m[a] / f.rho[a];
     double diag = 0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double r2, double, double F) {
@@ -65,14 +85,36 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
       if (s == a) return;  // a's own mirror image: P_a - P_a = 0
       const double c = -va * laplacian_coeff(f, a, b, r2, F, eta2);  // > 0
       diag += c;
-      if (a != 0 && s != 0) trip.emplace_back(static_cast<int>(a), static_cast<int>(s), -c);
+      if (a != 0 && s != 0) {
+        col[len] = static_cast<int>(s);
+        val[len++] = -c;
+      }
     });
-    trip.emplace_back(static_cast<int>(a), static_cast<int>(a), a == 0 ? 1.0 : diag);
+    col[len] = static_cast<int>(a);
+    val[len++] = a == 0 ? 1.0 : diag;
+    for (int k = 1; k < len; ++k) {  // stable insertion sort: duplicates keep their pair order
+      const int ck = col[k];
+      const double vk = val[k];
+      int i = k;
+      for (; i > 0 && col[i - 1] > ck; --i) {
+        col[i] = col[i - 1];
+        val[i] = val[i - 1];
+      }
+      col[i] = ck;
+      val[i] = vk;
+    }
+    int m = 0;  // merge equal columns, summing in the sorted order
+    for (int k = 0; k < len; ++k) {
+      if (m > 0 && col[m - 1] == col[k]) {
+        val[m - 1] += val[k];
+      } else {
+        col[m] = col[k];
+        val[m++] = val[k];
+      }
+    }
+    used[a] = m;
   }
-  sys.A.resize(static_cast<long>(n), static_cast<long>(n));
-  sys.A.setFromTriplets(trip.begin(), trip.end());  // duplicates (several images of one source) summed
-  sys.A.makeCompressed();
-  return sys;
+  A.makeCompressed();
 }
 
 }  // namespace arksph

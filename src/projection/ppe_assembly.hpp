@@ -31,6 +31,8 @@ struct PoissonSystem {
 // Assembles the system at the current fields. rho: density per point used in eq. 19 (each
 // particle's own density; two-phase flows use unequal values).
 PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt);
+// The same into an existing system, reusing its storage (no page faults on the matrix each step).
+void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, PoissonSystem& sys);
 
 // The approximate Laplacian of C&R eq. 19 applied to a pressure field (real particles, ghosts
 // mirror their source): for tests and residual checks.

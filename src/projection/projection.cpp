@@ -83,7 +83,9 @@ void Projection::project_velocities(double dt, double t, double* y) {
   rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u*
   const FluidFields& f = rhs_.fields();
   // 2.-3. Pressure Poisson equation and velocity correction, on the particles or on the grid.
+  const auto ta = std::chrono::steady_clock::now();
   const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  if (!grid_) stats_.assembly_seconds += since(ta);
   if (grid_) {
     project_on_grid(f, div, dt, y);
   } else {
@@ -94,7 +96,11 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout& L = rhs_.layout();
   const std::size_t n = L.n;
-  const PoissonSystem sys = exact_operator_? assemble_ppe_exact(f, div, dt) : assemble_ppe(f, div, dt);
+  const auto ta = std::chrono::steady_clock::now();
+  if (exact_operator_) system_ = assemble_ppe_exact(f, div, dt);
+  else assemble_ppe(f, div, dt, system_);
+  stats_.assembly_seconds += since(ta);
+  const PoissonSystem& sys = system_;
   if (solution_.size() != n) solution_.assign(n, 0.0);
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (P_0 = 0) as the next warm start: a start

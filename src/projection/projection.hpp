@@ -18,14 +18,16 @@
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
+#include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
 
 struct ProjectionStats {
   long solves = 0;
-  double seconds = 0;           // assembly + solve + correction
+  double seconds = 0;           // right-hand side at r* + assembly + solve + correction
   double solve_seconds = 0;     // the linear solve alone
+  double assembly_seconds = 0;  // divergence, source and matrix of the particle PPE
   double last_residual = 0, max_residual = 0;
   long iterations = 0, symbolic_analyses = 0;  // isph-gpps: symbolic_analyses counts grid factorisations
 };
@@ -68,6 +70,7 @@ class Projection {
   std::vector<double> y_prev_;
   std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)
   std::vector<double> solution_;  // the Poisson solver's solution (P_0 = 0): the next warm start
+  PoissonSystem system_;          // the last PPE, kept for its storage
   std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   ProjectionStats stats_;

@@ -42,7 +42,10 @@ double DensityCorrection::density_error(double t, const double* y) {
   return std::sqrt(s / static_cast<double>(n));
 }
 
-void DensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) { permute(pstar_, from); }
+void DensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) {
+  permute(pstar_, from);
+  solver_ = make_poisson_solver(solver_->name(), tolerance_);  // its stored structure is in the old order
+}
 
 void DensityCorrection::apply(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -41,6 +41,8 @@ void Projection::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(solution_, from);
   if (y_prev_.size() == rhs_.layout().size()) permute_state(rhs_.layout(), y_prev_.data(), from);
   if (correction_) correction_->permute_particles(from);
+  // A solver's stored structure (KLU's symbolic analysis, cg_amg's aggregates) is in the old order.
+  solver_ = make_poisson_solver(solver_->name(), tolerance_);
 }
 
 void Projection::begin_step(double t, const double* y) {

@@ -1,8 +1,5 @@
 #include "projection/correction_newton.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -12,64 +9,141 @@
 namespace arksph {
 
 namespace {
-using Sparse = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-using Trip = Eigen::Triplet<double, int>;
+using Vec = std::vector<double>;
+
+double dot(const Vec& a, const Vec& b) {
+  double s = 0;
+#pragma omp parallel for schedule(static) reduction(+ : s)
+  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
 
 // s_a - mean s for the current fields; returns the r.m.s.
-double density_fluctuation(const FluidFields& f, Eigen::VectorXd& s) {
+double density_fluctuation(const FluidFields& f, Vec& s) {
   const std::size_t n = f.n_real;
   const double w0 = f.kernel->W(0.0);
-  s.resize(static_cast<long>(n));
+  s.resize(n);
+#pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     double d = w0;
     f.pairs.for_pairs(a, [&](std::uint32_t, double, double, double, double w, double) { d += w; });
-    s(static_cast<long>(a)) = 1.0 - f.m[a] * d / f.rho0[a];
+    s[a] = 1.0 - f.m[a] * d / f.rho0[a];
   }
-  s.array() -= s.mean();
-  return std::sqrt(s.squaredNorm() / static_cast<double>(n));
+  const double mean = std::accumulate(s.begin(), s.end(), 0.0) / static_cast<double>(n);
+  for (double& v : s) v -= mean;
+  return std::sqrt(dot(s, s) / static_cast<double>(n));
 }
 
+// BiCGSTAB (van der Vorst 1992) on K x = b from x = 0, matrix-free, at most max_it iterations.
+// Right-preconditioned by the diagonal: solves K D^-1 z = b, x = D^-1 z.
+template <class Apply>
+int bicgstab(Apply&& K_plain, const Vec& inv_diag, const Vec& b, Vec& x, int max_it, double rel_tol) {
+  const std::size_t n = b.size();
+  Vec scaled(n);
+  auto K = [&](const Vec& q, Vec& out) {
+    for (std::size_t i = 0; i < n; ++i) scaled[i] = inv_diag[i] * q[i];
+    K_plain(scaled, out);
+  };
+  x.assign(n, 0.0);
+  Vec r = b, r0 = b, p(n, 0.0), v(n, 0.0), s(n), t(n);
+  double rho = 1, alpha = 1, omega = 1;
+  const double stop = rel_tol * std::sqrt(dot(b, b));
+  int it = 0;
+  for (; it < max_it && std::sqrt(dot(r, r)) > stop; ++it) {
+    const double rho_new = dot(r0, r);
+    if (rho_new == 0 || omega == 0) break;
+    const double beta = (rho_new / rho) * (alpha / omega);
+    rho = rho_new;
+    for (std::size_t i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
+    K(p, v);
+    const double r0v = dot(r0, v);
+    if (r0v == 0) break;
+    alpha = rho / r0v;
+    for (std::size_t i = 0; i < n; ++i) s[i] = r[i] - alpha * v[i];
+    K(s, t);
+    const double tt = dot(t, t);
+    omega = tt > 0 ? dot(t, s) / tt : 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] += alpha * p[i] + omega * s[i];
+      r[i] = s[i] - omega * t[i];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) x[i] *= inv_diag[i];
+  return it;
+}
 }  // namespace
 
-CorrectionOperators correction_operators(const FluidFields& f) {
+void correction_shift(const FluidFields& f, const std::vector<double>& p, std::vector<double>& dx,
+                      std::vector<double>& dy) {
   const std::size_t n = f.n_real;
-  const long nn = static_cast<long>(n);
-  std::vector<Trip> gx, gy, dx, dy;
+  dx.resize(n), dy.resize(n);
+#pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    const int ia = static_cast<int>(a);
+    double gx = 0, gy = 0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const int ic = static_cast<int>(f.src[b]);
-      const double c = f.m[b] / f.rho[b] * F;
-      gx.emplace_back(ia, ic, c * rx), gx.emplace_back(ia, ia, -c * rx);
-      const double mx = f.flip_x.empty() ? 1.0 : f.flip_x[b];
-      dx.emplace_back(ia, ia, F * rx), dx.emplace_back(ia, ic, -F * mx * rx);
-      if (f.dim == 2) {
-        const double my = f.flip_y.empty() ? 1.0 : f.flip_y[b];
-        gy.emplace_back(ia, ic, c * ry), gy.emplace_back(ia, ia, -c * ry);
-        dy.emplace_back(ia, ia, F * ry), dy.emplace_back(ia, ic, -F * my * ry);
-      }
+      const double c = f.m[b] / f.rho[b] * F * (p[f.src[b]] - p[a]);  // V_b (p_src(b) - p_a) grad_a W_ab
+      gx += c * rx;
+      gy += c * ry;
     });
+    dx[a] = -gx / f.rho0[a];
+    dy[a] = f.dim == 2 ? -gy / f.rho0[a] : 0.0;
   }
-  CorrectionOperators op;
-  Sparse Dx(nn, nn), Dy(nn, nn);
-  op.Gx.resize(nn, nn), op.Gy.resize(nn, nn);
-  op.Gx.setFromTriplets(gx.begin(), gx.end());
-  Dx.setFromTriplets(dx.begin(), dx.end());
-  Eigen::VectorXd inv_rho0(nn), row(nn);
-  for (std::size_t a = 0; a < n; ++a) {
-    inv_rho0(static_cast<long>(a)) = 1.0 / f.rho0[a];
-    row(static_cast<long>(a)) = f.m[a] / f.rho0[a];
-  }
-  Sparse sum = Dx * inv_rho0.asDiagonal() * op.Gx;
-  if (f.dim == 2) {
-    op.Gy.setFromTriplets(gy.begin(), gy.end());
-    Dy.setFromTriplets(dy.begin(), dy.end());
-    sum += Sparse(Dy * inv_rho0.asDiagonal() * op.Gy);
-  }
-  op.K = row.asDiagonal() * sum;
-  op.K.makeCompressed();
-  return op;
 }
+
+void density_change(const FluidFields& f, const std::vector<double>& dx, const std::vector<double>& dy,
+                    std::vector<double>& ds) {
+  const std::size_t n = f.n_real;
+  ds.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    double dd = 0;  // d(sum_b W_ab) = sum_b F_ab r_ab . (dr_a - M_b dr_src(b))
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const std::uint32_t c = f.src[b];
+      const double mx = f.flip_x.empty() ? 1.0 : f.flip_x[b], my = f.flip_y.empty() ? 1.0 : f.flip_y[b];
+      dd += F * (rx * (dx[a] - mx * dx[c]) + (f.dim == 2 ? ry * (dy[a] - my * dy[c]) : 0.0));
+    });
+    ds[a] = -f.m[a] / f.rho0[a] * dd;
+  }
+}
+
+namespace {
+// diag(K), the Jacobi preconditioner: dK_aa = -(m_a/rho0_a) sum_b F_ab r_ab . (e_a - M_b e_src(b)),
+// with e_c = d(dr_c)/dp_a. For c = a, e_a = (1/rho0_a) sum_{b': src(b') != a} V_b' F_ab' r_ab'; for
+// c != a, e_c = -(1/rho0_c) sum over c's neighbours b' that are a or an image of a of V_b' F_cb' r_cb'.
+// Wall particles, whose own mirror image enters, have a diagonal several times the bulk's.
+Vec diagonal(const FluidFields& f) {
+  const std::size_t n = f.n_real;
+  Vec diag(n);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t a = 0; a < n; ++a) {
+    double eax = 0, eay = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      if (f.src[b] == a) return;
+      const double c = f.m[b] / f.rho[b] * F;
+      eax += c * rx, eay += c * ry;
+    });
+    eax /= f.rho0[a], eay /= f.rho0[a];
+    double dd = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const std::uint32_t c = f.src[b];
+      const double mx = f.flip_x.empty() ? 1.0 : f.flip_x[b], my = f.flip_y.empty() ? 1.0 : f.flip_y[b];
+      double ecx = eax, ecy = eay;
+      if (c != a) {
+        ecx = 0, ecy = 0;
+        f.pairs.for_pairs(c, [&](std::uint32_t b2, double rx2, double ry2, double, double, double F2) {
+          if (f.src[b2] != a) return;
+          const double v = f.m[b2] / f.rho[b2] * F2;
+          ecx -= v * rx2, ecy -= v * ry2;
+        });
+        ecx /= f.rho0[c], ecy /= f.rho0[c];
+      }
+      dd += F * (rx * (eax - mx * ecx) + (f.dim == 2 ? ry * (eay - my * ecy) : 0.0));
+    });
+    diag[a] = -f.m[a] / f.rho0[a] * dd;
+  }
+  return diag;
+}
+}  // namespace
 
 NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, double* y, int max_iterations,
                                               double threshold, double spacing) {
@@ -82,30 +156,29 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
   const StateLayout& L = rhs.layout();
   const std::size_t n = L.n;
   NewtonCorrectionResult res;
-  Eigen::VectorXd s;
+  Vec s, p, minus_s(n), sx, sy, ds;
   rhs.eval(t, y, nullptr);
   res.error = density_fluctuation(rhs.fields(), s);
   for (int it = 0; it < max_iterations && res.error > threshold; ++it) {
     const FluidFields& f = rhs.fields();
-    const CorrectionOperators op = correction_operators(f);
-    Eigen::BiCGSTAB<Sparse, Eigen::DiagonalPreconditioner<double>> solver;
-    solver.setMaxIterations(kKrylovIterations);
-    solver.setTolerance(1e-3);
-    solver.compute(op.K);
-    const Eigen::VectorXd p = solver.solve(-s);
-    res.krylov_iterations += solver.iterations();
-    Eigen::VectorXd sx = op.Gx * p, sy = f.dim == 2 ? Eigen::VectorXd(op.Gy * p) : Eigen::VectorXd::Zero(s.size());
+    auto K = [&](const Vec& q, Vec& out) {  // out = K q - mean: the change of s - mean s
+      correction_shift(f, q, sx, sy);
+      density_change(f, sx, sy, out);
+      const double mean = std::accumulate(out.begin(), out.end(), 0.0) / static_cast<double>(n);
+      for (double& v : out) v -= mean;
+    };
+    for (std::size_t a = 0; a < n; ++a) minus_s[a] = -s[a];
+    Vec inv_diag = diagonal(f);
+    for (double& d : inv_diag) d = d != 0 ? 1.0 / d : 1.0;
+    res.krylov_iterations += bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3);
+    correction_shift(f, p, sx, sy);
     double largest = 0;
-    for (std::size_t a = 0; a < n; ++a) {
-      const long i = static_cast<long>(a);
-      sx(i) /= -f.rho0[a], sy(i) /= -f.rho0[a];
-      largest = std::max(largest, std::hypot(sx(i), sy(i)));
-    }
+    for (std::size_t a = 0; a < n; ++a) largest = std::max(largest, std::hypot(sx[a], sy[a]));
     if (!std::isfinite(largest)) break;  // the solve failed: leave the positions as they are
     const double scale = largest > kMaxShift * spacing ? kMaxShift * spacing / largest : 1.0;
     for (std::size_t a = 0; a < n; ++a) {
-      y[L.pos(0) + a] += scale * sx(static_cast<long>(a));
-      if (L.dim == 2) y[L.pos(1) + a] += scale * sy(static_cast<long>(a));
+      y[L.pos(0) + a] += scale * sx[a];
+      if (L.dim == 2) y[L.pos(1) + a] += scale * sy[a];
     }
     ++res.iterations;
     rhs.eval(t, y, nullptr);

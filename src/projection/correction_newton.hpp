@@ -8,22 +8,25 @@
 // column of b's source (M_b = diag(flip_x, flip_y): +1, -1 across a wall, 0 held on it). This is
 // eq. 59's Taylor expansion without the further step to the approximate Laplacian of eq. 58; unlike
 // that Laplacian it keeps a particle's coupling to its own mirror image, which is what moves a
-// particle pressed against a wall. Each iteration solves K p = -(s - mean s) with a few BiCGSTAB
+// particle pressed against a wall. Each iteration solves K p = -(s - mean s) with a few matrix-free BiCGSTAB
 // iterations (truncated Krylov: the odd-even modes in which K is nearly singular are not amplified),
 // and limits the largest shift to a fraction of the spacing.
 #pragma once
-#include <Eigen/SparseCore>
+#include <vector>
 
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
 
-// The operators at the current fields (exposed for the finite-difference test of K).
-struct CorrectionOperators {
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> Gx, Gy;  // (G p)_a = sum_b V_b (p_src(b) - p_a) grad_a W_ab
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> K;       // ds/dp for the shift dr = -G p / rho0
-};
-CorrectionOperators correction_operators(const FluidFields& f);
+// The shift of eq. 57 for a potential p: dr_a = -(G p)_a / rho0_a, G the difference-form gradient
+// sum_b V_b (p_src(b) - p_a) grad_a W_ab (ghosts carry their source's p).
+void correction_shift(const FluidFields& f, const std::vector<double>& p, std::vector<double>& dx,
+                      std::vector<double>& dy);
+// The first-order change of s_a = 1 - (m_a/rho0_a) sum_b W_ab when every real particle c moves by
+// dr_c and each ghost b with it through its mirror map M_b: -(m_a/rho0_a) sum_b F_ab r_ab . (dr_a -
+// M_b dr_src(b)). K p is density_change(correction_shift(p)); applied matrix-free.
+void density_change(const FluidFields& f, const std::vector<double>& dx, const std::vector<double>& dy,
+                    std::vector<double>& ds);
 
 struct NewtonCorrectionResult {
   int iterations = 0;        // Newton steps taken

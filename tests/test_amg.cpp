@@ -17,27 +17,7 @@ using namespace arksph;
 
 namespace {
 
-// Unit box with no-slip walls (the default boundary), a non-uniform velocity: a divergence on every
-// particle, so a pressure field with structure everywhere.
-const char* kWalledBox = R"toml(
-[scene]
-name = "amg_box"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-viscosity = 0.01
-[initial]
-velocity = ["sin(pi*x)*cos(0.5*pi*y) + 0.3*x", "0.2*sin(2*pi*x*y)"]
-[method]
-scheme = "isph"
-kernel = "quartic_spline"
-h_over_dx = 1.3
-[time]
-end = 0.01
-dt = 0.01
-)toml";
+const std::string& kWalledBox = testing::kIsphWalledBox;
 
 Scene scene_of(const std::string& text, const std::vector<std::string>& sets) {
   std::ostringstream warnings;

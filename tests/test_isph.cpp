@@ -16,31 +16,10 @@
 using namespace arksph;
 
 namespace {
-const char* kBoxScene = R"toml(
-[scene]
-name = "isph_box"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-viscosity = 0.01
-[initial]
-velocity = ["sin(pi*x)*cos(0.5*pi*y) + 0.3*x", "0.2*sin(2*pi*x*y)"]
-[method]
-scheme = "isph"
-kernel = "quartic_spline"
-h_over_dx = 1.3
-viscosity_model = "monaghan"
-[time]
-end = 0.01
-integrator = "ARKSPH_FORWARD_EULER_1_1"
-dt = 0.01
-)toml";
 
 Scene box_scene(const std::vector<std::string>& sets) {
   std::ostringstream warnings;
-  return read_scene_text(kBoxScene, "test", sets, warnings);
+  return read_scene_text(testing::kIsphWalledBox, "test", sets, warnings);
 }
 
 // --- The brute-force reference: all pairs, ghosts by hand, dense linear algebra. ---

@@ -16,6 +16,31 @@
 
 namespace arksph::testing {
 
+// A unit box with no-slip walls (the default boundary) and a non-uniform velocity, ISPH, 10 x 10:
+// a divergence on every particle, so a pressure field with structure everywhere. Forward Euler, one
+// step of 0.01.
+inline const std::string kIsphWalledBox = R"toml(
+[scene]
+name = "isph_box"
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[fluid]
+spacing = 0.1
+viscosity = 0.01
+[initial]
+velocity = ["sin(pi*x)*cos(0.5*pi*y) + 0.3*x", "0.2*sin(2*pi*x*y)"]
+[method]
+scheme = "isph"
+kernel = "quartic_spline"
+h_over_dx = 1.3
+viscosity_model = "monaghan"
+[time]
+end = 0.01
+integrator = "ARKSPH_FORWARD_EULER_1_1"
+dt = 0.01
+)toml";
+
 // A doubly periodic box with a smooth, divergence-free initial velocity (Taylor-Green vortex),
 // WCSPH; callers append their own [time] (and [output]) tables.
 inline const std::string kTaylorGreenBox = R"toml(

@@ -103,7 +103,7 @@ TEST_CASE("P-W newton: one step removes most of a displaced particle's density e
   CHECK(newton[0] == doctest::Approx(fixed[0]).epsilon(1e-12));
   CHECK(newton[1] < newton[0] / 8);
   CHECK(fixed[1] > fixed[0] / 1.6);
-  // Next to a wall (measured: 5 Newton steps 1.59e-3 -> 2.6e-5, 61x; 5 fixed-point steps -> 8.9e-4, 1.8x).
+  // Next to a wall (measured: 5 Newton steps 1.59e-3 -> 4.4e-5, 36x; 5 fixed-point steps -> 8.9e-4, 1.8x).
   const auto nw = history(kNearWall, "newton", 5), fw = history(kNearWall, "fixed_point", 5);
   MESSAGE("near a wall: newton ", nw[0], " -> ", nw[1], ", fixed point ", fw[0], " -> ", fw[1]);
   CHECK(nw[1] < nw[0] / 20);

@@ -150,9 +150,9 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
   // Krylov iterations per Newton step: enough for the smooth part of the error, too few to chase
   // the near-null odd-even modes (measured on cases/perturbed_lattice and the cavity).
   constexpr int kKrylovIterations = 20;
-  // Largest shift per step as a fraction of the spacing: the linearisation of eq. 59 holds for
-  // shifts small against the kernel radius; a larger step is scaled down as a whole.
-  constexpr double kMaxShift = 0.1;
+  // Largest shift of a particle per step as a fraction of the spacing: the linearisation of eq. 59
+  // holds for shifts small against the kernel radius.
+  constexpr double kMaxShift = 0.25;
   const StateLayout& L = rhs.layout();
   const std::size_t n = L.n;
   NewtonCorrectionResult res;
@@ -172,11 +172,15 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
     for (double& d : inv_diag) d = d != 0 ? 1.0 / d : 1.0;
     res.krylov_iterations += bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3);
     correction_shift(f, p, sx, sy);
-    double largest = 0;
-    for (std::size_t a = 0; a < n; ++a) largest = std::max(largest, std::hypot(sx[a], sy[a]));
-    if (!std::isfinite(largest)) break;  // the solve failed: leave the positions as they are
-    const double scale = largest > kMaxShift * spacing ? kMaxShift * spacing / largest : 1.0;
+    bool finite = true;
+    for (std::size_t a = 0; a < n; ++a) finite = finite && std::isfinite(sx[a]) && std::isfinite(sy[a]);
+    if (!finite) break;  // the solve failed: leave the positions as they are
+    // Each particle's shift is clipped on its own: scaling the whole field down for one outlier
+    // (a particle in a corner) would stall the correction everywhere else.
+    const double cap = kMaxShift * spacing;
     for (std::size_t a = 0; a < n; ++a) {
+      const double len = std::hypot(sx[a], sy[a]);
+      const double scale = len > cap ? cap / len : 1.0;
       y[L.pos(0) + a] += scale * sx[a];
       if (L.dim == 2) y[L.pos(1) + a] += scale * sy[a];
     }

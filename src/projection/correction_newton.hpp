@@ -10,7 +10,7 @@
 // that Laplacian it keeps a particle's coupling to its own mirror image, which is what moves a
 // particle pressed against a wall. Each iteration solves K p = -(s - mean s) with a few matrix-free BiCGSTAB
 // iterations (truncated Krylov: the odd-even modes in which K is nearly singular are not amplified),
-// and limits the largest shift to a fraction of the spacing.
+// and clips each particle's shift at a tenth of the spacing.
 #pragma once
 #include <vector>
 

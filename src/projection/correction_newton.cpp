@@ -145,6 +145,26 @@ Vec diagonal(const FluidFields& f) {
 }
 }  // namespace
 
+namespace {
+// 1/d for the Jacobi preconditioner, with every entry held to the bulk's sign and to at least a tenth
+// of the median magnitude: at a corner, where the images of all sides meet, an entry can be near
+// zero or of the other sign, and its inverse would blow that particle's shift up.
+Vec safe_inverse(Vec d) {
+  Vec mag(d.size());
+  std::size_t positive = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    mag[i] = std::abs(d[i]);
+    positive += d[i] > 0 ? 1 : 0;
+  }
+  if (d.empty()) return d;
+  std::nth_element(mag.begin(), mag.begin() + static_cast<long>(mag.size() / 2), mag.end());
+  const double floor = 0.1 * mag[mag.size() / 2];
+  const double sign = 2 * positive >= d.size() ? 1.0 : -1.0;
+  for (double& v : d) v = floor > 0 ? sign / std::max(sign * v, floor) : 1.0;
+  return d;
+}
+}  // namespace
+
 NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, double* y, int max_iterations,
                                               double threshold, double spacing) {
   // Krylov iterations per Newton step: enough for the smooth part of the error, too few to chase
@@ -152,7 +172,7 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
   constexpr int kKrylovIterations = 20;
   // Largest shift of a particle per step as a fraction of the spacing: the linearisation of eq. 59
   // holds for shifts small against the kernel radius.
-  constexpr double kMaxShift = 0.25;
+  constexpr double kMaxShift = 0.1;
   const StateLayout& L = rhs.layout();
   const std::size_t n = L.n;
   NewtonCorrectionResult res;
@@ -168,8 +188,7 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
       for (double& v : out) v -= mean;
     };
     for (std::size_t a = 0; a < n; ++a) minus_s[a] = -s[a];
-    Vec inv_diag = diagonal(f);
-    for (double& d : inv_diag) d = d != 0 ? 1.0 / d : 1.0;
+    const Vec inv_diag = safe_inverse(diagonal(f));
     res.krylov_iterations += bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3);
     correction_shift(f, p, sx, sy);
     bool finite = true;

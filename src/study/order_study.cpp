@@ -18,6 +18,7 @@
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "study/reference_error.hpp"
+#include "study/study_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -78,12 +79,6 @@ double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
   return m;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 }  // namespace
 
 double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
@@ -97,15 +92,7 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) 
 }
 
 OrderStudy read_order_study(const std::string& path, const std::vector<std::string>& extra_sets) {
-  const std::string text = slurp(path);
-  if (text.empty() && !fs::exists(path)) throw InputError(path + ": cannot read the study file");
-  toml::table root;
-  try {
-    root = toml::parse(std::string_view(text), std::string_view(path));
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) +
-                     ": syntax error");
-  }
+  const toml::table root = read_study_toml(path);
   const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + key + ": " + why); };
   for (const auto& [k, v] : root)
     if (k.str() != "study" && k.str() != "dt_for") throw bad(std::string(k.str()), "unknown key (expected [study], [dt_for])");
@@ -151,11 +138,7 @@ OrderStudy read_order_study(const std::string& path, const std::vector<std::stri
     throw bad("study.reference", "'" + s.reference + "': expected fine_step or analytic");
   if (s.reference == "analytic") {
     if (s.analytic_velocity.empty()) throw bad("study.analytic_velocity", "missing (needed by reference = \"analytic\")");
-    try {
-      AnalyticVelocity check(s.analytic_velocity[0], s.analytic_velocity[1]);
-    } catch (const InputError& e) {
-      throw bad("study.analytic_velocity", e.what());
-    }
+    check_analytic_velocity(path, s.analytic_velocity);
   } else if (!s.analytic_velocity.empty()) {
     throw bad("study.analytic_velocity", "only with reference = \"analytic\"");
   }
@@ -183,13 +166,13 @@ OrderStudy read_order_study(const std::string& path, const std::vector<std::stri
   s.sets.insert(s.sets.end(), extra_sets.begin(), extra_sets.end());
   if (s.output.empty()) s.output = "runs/" + fs::path(path).stem().string();
   std::ostringstream warnings;
-  read_scene_text(slurp(s.scene), s.scene, s.sets, warnings);  // bad scene or set: exit 2 before any run
+  read_scene_text(read_text_file(s.scene), s.scene, s.sets, warnings);  // bad scene or set: exit 2 before any run
   return s;
 }
 
 std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
   std::ostringstream warnings;
-  const Scene scene = read_scene_text(slurp(study.scene), study.scene, study.sets, warnings);
+  const Scene scene = read_scene_text(read_text_file(study.scene), study.scene, study.sets, warnings);
   std::vector<OrderFit> fits;
   // A common reference table runs once, at the smallest step of the whole study / divisor.
   double dt_min_all = 1e300;

@@ -18,6 +18,7 @@
 #include "io/scene_reader.hpp"
 #include "study/batch.hpp"
 #include "study/reference_error.hpp"
+#include "study/study_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -26,12 +27,6 @@ namespace arksph {
 namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::string folder_name(const std::string& s) {
   std::string out = s;
@@ -110,15 +105,7 @@ ParticleVelocities final_velocities(const std::string& dir, double* time, long* 
 }  // namespace
 
 WorkPrecisionStudy read_work_precision_study(const std::string& path, const std::vector<std::string>& extra_sets) {
-  const std::string text = slurp(path);
-  if (text.empty() && !fs::exists(path)) throw InputError(path + ": cannot read the study file");
-  toml::table root;
-  try {
-    root = toml::parse(std::string_view(text), std::string_view(path));
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) +
-                     ": syntax error");
-  }
+  const toml::table root = read_study_toml(path);
   const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + key + ": " + why); };
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
@@ -156,12 +143,7 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
   if (s.reference != "analytic" && s.reference != "run" && s.reference != "ghia")
     throw bad("study.reference", "'" + s.reference + "': expected analytic, run or ghia");
   if (s.reference == "analytic") {
-    if (s.analytic_velocity.size() != 2) throw bad("study.analytic_velocity", "expected two expressions [u, v] of x, y, t");
-    try {
-      AnalyticVelocity check(s.analytic_velocity[0], s.analytic_velocity[1]);
-    } catch (const InputError& e) {
-      throw bad("study.analytic_velocity", e.what());
-    }
+    check_analytic_velocity(path, s.analytic_velocity);
   } else if (!s.analytic_velocity.empty()) {
     throw bad("study.analytic_velocity", "only with reference = \"analytic\"");
   }
@@ -175,7 +157,7 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
   s.sets.insert(s.sets.end(), extra_sets.begin(), extra_sets.end());
   if (s.output.empty()) s.output = "runs/" + fs::path(path).stem().string();
   // Every run's scene must read (exit 2 before anything runs).
-  const std::string scene_text = slurp(s.scene);
+  const std::string scene_text = read_text_file(s.scene);
   std::ostringstream warnings;
   for (const auto& res : s.resolutions)
     for (const auto& sch : s.schemes) {
@@ -278,7 +260,7 @@ int cmd_work_precision_study(const StudyArgs& args) {
       return 3;
     }
     std::ostringstream warnings;
-    const Scene rs = read_scene_text(slurp(study.scene), study.scene, reference_run_sets(study), warnings);
+    const Scene rs = read_scene_text(read_text_file(study.scene), study.scene, reference_run_sets(study), warnings);
     ref_h = rs.h_over_dx * rs.spacing;
     ref_kernel = rs.kernel;
     ref = final_velocities(r.dir, nullptr, nullptr);

@@ -234,7 +234,7 @@ void read_method(const Section& root, Scene& s) {
   const Section m = root.section("method", {"scheme", "kernel", "h_over_dx", "viscosity_model",
                                             "sound_speed", "tait_gamma", "background_pressure", "density_mode",
                                             "pressure_gradient", "density_correction", "ppe_solver",
-                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_pressure_offset", "neighbor_storage", "ppe_tolerance", "gpps_spacing", "gpps_volume_relaxation", "centre_positions", "projection_points", "correction_threshold",
+                                            "ppe_operator", "ppe_divergence", "ppe_pressure_level", "ppe_pressure_offset", "neighbor_storage", "force_sweep", "ppe_tolerance", "gpps_spacing", "gpps_volume_relaxation", "centre_positions", "projection_points", "correction_threshold",
                                             "correction_max_iterations", "correction_solver", "reorder_every",
                                             "cleary_xi", "kernel_correction", "pressure_reduction",
                                             "equation_of_state", "gas_gamma"});
@@ -280,6 +280,10 @@ void read_method(const Section& root, Scene& s) {
   // "pairs": W and F stored per pair (fast); "candidates": only the Verlet candidates are stored and
   // every term evaluates the kernel again (about 1 KB per particle less than 2, slower)
   s.neighbor_storage = m.one_of("neighbor_storage", {"pairs", "candidates"}, s.neighbor_storage);
+  // true: the force terms that sum over one particle's neighbours run in one sweep, each particle's
+  // neighbours and kernel values gathered once into a small buffer (no per-pair storage for wcsph);
+  // false: each term walks the stored pair list on its own. Same results bit for bit.
+  s.force_sweep = m.boolean("force_sweep", s.force_sweep);
   // A constant added to P after the level is fixed (a background pressure: with eq. 11's symmetric
   // pairs it pushes disordered particles apart in proportion to their disorder)
   s.ppe_pressure_offset = m.number("ppe_pressure_offset", s.ppe_pressure_offset);

@@ -98,6 +98,7 @@ std::string scene_to_toml(const Scene& s) {
     << "ppe_pressure_level = " << quote(s.ppe_pressure_level) << "\n"
     << "ppe_pressure_offset = " << num(s.ppe_pressure_offset) << "\n"
     << "neighbor_storage = " << quote(s.neighbor_storage) << "\n"
+    << "force_sweep = " << boolean(s.force_sweep) << "\n"
     << "ppe_solver = " << quote(s.ppe_solver) << "\n"
     << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
     << "gpps_spacing = " << num(s.gpps_spacing) << "\n"

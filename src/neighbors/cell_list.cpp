@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -10,6 +12,11 @@
 #include "kernels/kernel.hpp"
 
 namespace arksph {
+
+void pair_list_not_built() {
+  std::fputs("arksph: internal error: pair list read at an f(t, y) that built none\n", stderr);
+  std::abort();
+}
 
 void CellList::build(const double* x, const double* y, std::size_t n, double radius) {
   two_d_ = y != nullptr;
@@ -202,6 +209,44 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
     // Pass 3: kernel values of the kept pairs.
     kernel.eval_many(k - base, pf + base, pw + base, pf + base);
   }
+}
+
+}  // namespace arksph
+
+#include "neighbors/neighborhood.hpp"
+
+namespace arksph {
+
+void gather_neighborhood(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
+                         std::size_t a, Neighborhood& nb) {
+  const double r_max2 = kernel.radius() * kernel.radius();
+  const std::uint32_t* cj = cand.j.data();
+  std::uint32_t* __restrict pb = nb.b.data();
+  double* __restrict prx = nb.rx.data();
+  double* __restrict pry = nb.ry.data();
+  double* __restrict pr2 = nb.r2.data();
+  const double xa = x[a], ya = y ? y[a] : 0.0;
+  std::size_t k = 0;
+  // The same operations as pairs_from_candidates then PairList::for_pairs: r_ab = r_a - r_b,
+  // r2 = rx^2 + ry^2, kept when r2 < R^2, kernel values from r2 by eval_many.
+  for (std::size_t c = cand.start[a], end = c + cand.count[a]; c < end; ++c) {
+    const std::uint32_t bb = cj[c];
+    const double dx = xa - x[bb], dy = y ? ya - y[bb] : 0.0;
+    const double rr = dx * dx + dy * dy;
+    pb[k] = bb;
+    prx[k] = dx;
+    pry[k] = dy;
+    pr2[k] = rr;
+    k += rr < r_max2 ? 1 : 0;  // branch-free compaction: a rejected entry is overwritten
+  }
+  nb.count = k;
+  kernel.eval_many(k, pr2, nb.w.data(), nb.f.data());
+}
+
+std::size_t max_candidates(const CandidateList& cand) {
+  std::size_t m = 0;
+  for (std::uint32_t c : cand.count) m = std::max<std::size_t>(m, c);
+  return m;
 }
 
 }  // namespace arksph

@@ -44,6 +44,8 @@ class CellList {
   std::vector<double> sx_, sy_;                // coordinates in cell order
 };
 
+[[noreturn]] void pair_list_not_built();
+
 // Neighbour pairs of each real particle a (a < n_real) among all points, self excluded, with
 // r_ab = r_a - r_b, the kernel value W_ab and F_ab = (dW/dr)/r, so that grad_a W_ab = F_ab r_ab.
 // Compressed rows: a's pairs are entries start[a] .. start[a] + count[a] - 1, counted in a first pass
@@ -90,6 +92,9 @@ struct PairList {
   // body(b, rx, ry, r2, W_ab, F_ab) for every neighbour b of a.
   template <class Body>
   void for_pairs(std::size_t a, Body&& body) const {
+    // One compare per particle (not per pair): a programming error, reported as such. With the force
+    // sweep, a WCSPH f(t, y) with ydot stores no pairs; eval(t, y, nullptr) refreshes them.
+    if (a >= n_real) [[unlikely]] pair_list_not_built();
     const double xa = px[a], ya = py ? py[a] : 0.0;
     if (kernel) {
       const std::size_t cbase = (*cand_start)[a], cend = cbase + (*cand_count)[a];

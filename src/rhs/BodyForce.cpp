@@ -18,6 +18,7 @@ class BodyForce final : public Term {
   }
   std::string name() const override { return "body_force"; }
   Stage stage() const override { return Stage::force; }
+  bool uses_neighbors() const override { return false; }
   void apply(FluidFields& f) const override {
     double* out[2] = {f.dudt.data(), f.dvdt.data()};
     for (int k = 0; k < f.dim; ++k) {

@@ -1,26 +1,24 @@
 // Continuity equation in the symmetric form of Szewc et al. 2012 eq. 19 (C&R 1999 eq. 3):
 //   d rho_a / dt = sum_b m_b (u_a - u_b) . grad_a W_ab,
 // with the divergence velocities of the ghosts (free-slip images optional, Szewc §6).
+#include "rhs/particle_term.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
 
-class ContinuitySzewc final : public Term {
+class ContinuitySzewc final : public ParticleTerm<ContinuitySzewc> {
  public:
   std::string name() const override { return "continuity:szewc19"; }
-  Stage stage() const override { return Stage::force; }
-  void apply(FluidFields& f) const override {
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      double rate = 0.0;
-      const double ua = f.ud[a], va = f.dim == 2 ? f.vd[a] : 0.0;
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-        const double u_ab = ua - f.ud[b];
-        const double v_ab = f.dim == 2 ? va - f.vd[b] : 0.0;
-        rate += f.m[b] * F * (u_ab * rx + v_ab * ry);  // m_b u_ab . (F r_ab)
-      });
-      f.drhodt[a] += rate;
-    }
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    double rate = 0.0;
+    const double ua = f.ud[a], va = f.dim == 2 ? f.vd[a] : 0.0;
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const double u_ab = ua - f.ud[b];
+      const double v_ab = f.dim == 2 ? va - f.vd[b] : 0.0;
+      rate += f.m[b] * F * (u_ab * rx + v_ab * ry);  // m_b u_ab . (F r_ab)
+    });
+    f.drhodt[a] += rate;
   }
 };
 

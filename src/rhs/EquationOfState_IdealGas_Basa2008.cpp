@@ -13,6 +13,7 @@ class EquationOfStateIdealGas final : public Term {
   explicit EquationOfStateIdealGas(double gamma) : gamma_(gamma) {}
   std::string name() const override { return "eos:ideal_gas"; }
   Stage stage() const override { return Stage::pressure; }
+  bool uses_neighbors() const override { return false; }
   void apply(FluidFields& f) const override {
     for (std::size_t a = 0; a < f.n_real; ++a) f.p[a] = (gamma_ - 1.0) * f.rho[a] * f.e[a];
   }

@@ -13,6 +13,7 @@ class EquationOfStateTait final : public Term {
       : c2_(sound_speed * sound_speed), gamma_(gamma), background_(background) {}
   std::string name() const override { return "eos:tait"; }
   Stage stage() const override { return Stage::pressure; }
+  bool uses_neighbors() const override { return false; }
   void apply(FluidFields& f) const override {
 #pragma omp parallel for schedule(static)
     for (std::size_t a = 0; a < f.n_real; ++a) {

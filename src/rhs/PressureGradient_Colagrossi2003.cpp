@@ -4,30 +4,28 @@
 // 2008 eq. 20) p_a and p_b become p - p_avg,a; with a kernel correction (Basa §4) grad_a W_ab
 // becomes the corrected gradient. Either breaks the exact conservation.
 #include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/particle_term.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
 
-class PressureGradientColagrossi final : public Term {
+class PressureGradientColagrossi final : public ParticleTerm<PressureGradientColagrossi> {
  public:
   std::string name() const override { return "pressure_gradient:colagrossi"; }
-  Stage stage() const override { return Stage::force; }
-  void apply(FluidFields& f) const override {
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      double ax = 0.0, ay = 0.0;
-      const double p_ref = f.p_avg.empty() ? 0.0 : f.p_avg[a];
-      const double pa = f.p[a] - p_ref, rhoa = f.rho[a];
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double w, double F) {
-        double gx, gy;
-        corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-        const double coeff = f.m[b] * (pa + f.p[b] - p_ref) / (rhoa * f.rho[b]);
-        ax -= coeff * gx;
-        ay -= coeff * gy;
-      });
-      f.dudt[a] += ax;
-      if (f.dim == 2) f.dvdt[a] += ay;
-    }
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    double ax = 0.0, ay = 0.0;
+    const double p_ref = f.p_avg.empty() ? 0.0 : f.p_avg[a];
+    const double pa = f.p[a] - p_ref, inv_rhoa = 1.0 / f.rho[a];
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double w, double F) {
+      double gx, gy;
+      corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+      const double coeff = f.vol[b] * (pa + f.p[b] - p_ref) * inv_rhoa;  // m_b / (rho_a rho_b) = V_b / rho_a
+      ax -= coeff * gx;
+      ay -= coeff * gy;
+    });
+    f.dudt[a] += ax;
+    if (f.dim == 2) f.dvdt[a] += ay;
   }
 };
 

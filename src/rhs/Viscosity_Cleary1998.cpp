@@ -7,37 +7,35 @@
 // With a kernel correction (Basa §4) grad_a W_ab is replaced by the corrected gradient.
 #include "kernels/kernel.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/particle_term.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
 
-class ViscosityCleary final : public Term {
+class ViscosityCleary final : public ParticleTerm<ViscosityCleary> {
  public:
   explicit ViscosityCleary(double xi) : xi_(xi) {}
   std::string name() const override { return "viscosity:cleary"; }
-  Stage stage() const override { return Stage::force; }
-  void apply(FluidFields& f) const override {
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      double ax = 0.0, ay = 0.0;
-      const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
-      const double mu_a = f.rho[a] * f.nu[a];
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
-        const double mu_b = f.rho[b] * f.nu[b];
-        const double mu_sum = mu_a + mu_b;
-        if (mu_sum <= 0) return;
-        const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);
-        double gx, gy;
-        corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-        const double coeff =
-            f.m[b] * xi_ / (f.rho[a] * f.rho[b]) * 4.0 * mu_a * mu_b / mu_sum * u_dot_r / (r2 + eta2);
-        ax += coeff * gx;
-        ay += coeff * gy;
-      });
-      f.dudt[a] += ax;
-      if (f.dim == 2) f.dvdt[a] += ay;
-    }
+    double ax = 0.0, ay = 0.0;
+    const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
+    const double mu_a = f.rho[a] * f.nu[a];
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+      const double mu_b = f.rho[b] * f.nu[b];
+      const double mu_sum = mu_a + mu_b;
+      if (mu_sum <= 0) return;
+      const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);
+      double gx, gy;
+      corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+      const double coeff =
+          f.m[b] * xi_ / (f.rho[a] * f.rho[b]) * 4.0 * mu_a * mu_b / mu_sum * u_dot_r / (r2 + eta2);
+      ax += coeff * gx;
+      ay += coeff * gy;
+    });
+    f.dudt[a] += ax;
+    if (f.dim == 2) f.dvdt[a] += ay;
   }
 
  private:

@@ -4,35 +4,33 @@
 // With a kernel correction (Basa §4) grad_a W_ab is replaced by the corrected gradient G_ab, so F
 // becomes (r_ab . G_ab) / r_ab^2.
 #include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/particle_term.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
 
-class ViscosityMorris final : public Term {
+class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
  public:
   std::string name() const override { return "viscosity:morris"; }
-  Stage stage() const override { return Stage::force; }
-  void apply(FluidFields& f) const override {
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      double ax = 0.0, ay = 0.0;
-      const double mu_a = f.rho[a] * f.nu[a], rho_a = f.rho[a];
-      const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
-      const bool corrected = f.correction != FluidFields::Correction::none;
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
-        if (corrected) {
-          double gx, gy;
-          corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-          F = (rx * gx + ry * gy) / r2;
-        }
-        const double mu_sum = mu_a + f.rho[b] * f.nu[b];
-        const double coeff = f.m[b] * mu_sum / (rho_a * f.rho[b]) * F;
-        ax += coeff * (ua - f.u[b]);
-        if (f.dim == 2) ay += coeff * (va - f.v[b]);
-      });
-      f.dudt[a] += ax;
-      if (f.dim == 2) f.dvdt[a] += ay;
-    }
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    double ax = 0.0, ay = 0.0;
+    const double mu_a = f.rho[a] * f.nu[a], inv_rho_a = 1.0 / f.rho[a];
+    const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
+    const bool corrected = f.correction != FluidFields::Correction::none;
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+      if (corrected) {
+        double gx, gy;
+        corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+        F = (rx * gx + ry * gy) / r2;
+      }
+      const double mu_sum = mu_a + f.rho[b] * f.nu[b];
+      const double coeff = f.vol[b] * mu_sum * inv_rho_a * F;  // m_b / (rho_a rho_b) = V_b / rho_a
+      ax += coeff * (ua - f.u[b]);
+      if (f.dim == 2) ay += coeff * (va - f.v[b]);
+    });
+    f.dudt[a] += ax;
+    if (f.dim == 2) f.dvdt[a] += ay;
   }
 };
 

@@ -10,32 +10,30 @@
 
 #include "kernels/kernel.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/particle_term.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
 
-class ViscosityVioleau final : public Term {
+class ViscosityVioleau final : public ParticleTerm<ViscosityVioleau> {
  public:
   explicit ViscosityVioleau(std::string name) : name_(std::move(name)) {}
   std::string name() const override { return name_; }
-  Stage stage() const override { return Stage::force; }
-  void apply(FluidFields& f) const override {
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      double ax = 0.0, ay = 0.0;
-      const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
-        const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);
-        double gx, gy;
-        corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-        const double coeff = f.m[b] * 8.0 / (f.rho[a] + f.rho[b]) * (f.nu[a] + f.nu[b]) * u_dot_r / (r2 + eta2);
-        ax += coeff * gx;
-        ay += coeff * gy;
-      });
-      f.dudt[a] += ax;
-      if (f.dim == 2) f.dvdt[a] += ay;
-    }
+    double ax = 0.0, ay = 0.0;
+    const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+      const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);
+      double gx, gy;
+      corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+      const double coeff = f.m[b] * 8.0 / (f.rho[a] + f.rho[b]) * (f.nu[a] + f.nu[b]) * u_dot_r / (r2 + eta2);
+      ax += coeff * gx;
+      ay += coeff * gy;
+    });
+    f.dudt[a] += ax;
+    if (f.dim == 2) f.dvdt[a] += ay;
   }
 
  private:

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <omp.h>
+
 #include "core/particle_order.hpp"
 
 namespace arksph {
@@ -21,7 +23,8 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       terms_(std::move(terms)),
       ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
       nu_(scene.viscosity),
-      lean_pairs_(scene.neighbor_storage == "candidates") {
+      lean_pairs_(scene.neighbor_storage == "candidates"),
+      sweep_(scene.force_sweep) {
   // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
   skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
@@ -40,6 +43,11 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   std::stable_sort(terms_.begin(), terms_.end(),
                    [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
   for (const auto& t : terms_) viscous_.push_back(t->name().rfind("viscosity:", 0) == 0);
+  // The pair list is built at every f unless the sweep covers every term that walks neighbours and
+  // nothing else reads the pairs afterwards (the projection schemes do).
+  pairs_every_eval_ = !sweep_ || scene.scheme != "wcsph";
+  for (const auto& t : terms_)
+    if (t->uses_neighbors() && !t->per_particle()) pairs_every_eval_ = true;
   fields_.dim = particles.dim;
   fields_.n_real = particles.n;
   fields_.kernel = &kernel_;
@@ -92,9 +100,10 @@ void RhsEvaluator::load_state(double t, const double* y) {
     if (!periodic_[k]) continue;
     std::vector<double>& c = k == 0 ? f.x : f.y;
     const double lo = lo_[k], len = len_[k];
-    for (double& v : c) {
-      if (v < lo || v >= lo + len) v = lo + (v - lo) - len * std::floor((v - lo) / len);
-    }
+    double* v = c.data();
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < n; ++a)
+      if (v[a] < lo || v[a] >= lo + len) v[a] = lo + (v[a] - lo) - len * std::floor((v[a] - lo) / len);
   }
   f.m.assign(particles_.mass.begin(), particles_.mass.end());
   if (layout_.has_density)
@@ -206,17 +215,42 @@ bool RhsEvaluator::needs_rebuild() const {
   if (ref_x_.size() != n) return true;
   const double limit2 = 0.25 * skin_ * skin_;  // moved more than skin / 2
   const FluidFields& f = fields_;
+  const bool two_d = layout_.dim == 2;
+  double moved2 = 0.0;  // NaN positions compare false: caught by the state checks, not here
+#pragma omp parallel for schedule(static) reduction(max : moved2)
   for (std::size_t a = 0; a < n; ++a) {
-    const double dx = f.x[a] - ref_x_[a], dy = layout_.dim == 2 ? f.y[a] - ref_y_[a] : 0.0;
-    if (dx * dx + dy * dy > limit2) return true;
+    const double dx = f.x[a] - ref_x_[a], dy = two_d ? f.y[a] - ref_y_[a] : 0.0;
+    moved2 = std::max(moved2, dx * dx + dy * dy);
   }
-  return false;
+  return moved2 > limit2;
 }
 
 void RhsEvaluator::copy_to_ghosts(std::vector<double>& field) {
   const std::size_t n = layout_.n;
   field.resize(fields_.n_all);
   for (std::size_t g = 0; g < ghosts_.size(); ++g) field[n + g] = field[ghosts_.source[g]];
+}
+
+// Terms [first, last) particle by particle: each particle's neighbourhood is gathered once (kernel
+// values included) into a per-thread buffer and handed to every term in order. Same sums, in the same
+// order, as applying the terms one after another over the pair list.
+void RhsEvaluator::force_sweep(std::size_t first, std::size_t last) {
+  FluidFields& f = fields_;
+  const double* x = f.x.data();
+  const double* y = layout_.dim == 2 ? f.y.data() : nullptr;
+  const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
+  if (scratch_.size() < threads) scratch_.resize(threads);
+  for (Neighborhood& nb : scratch_) nb.reserve(sweep_room_);
+#pragma omp parallel
+  {
+    Neighborhood& nb = scratch_[static_cast<std::size_t>(omp_get_thread_num())];
+    // Dynamic chunks balance the threads; each particle's sums are the same whatever thread runs it.
+#pragma omp for schedule(dynamic, 64)
+    for (std::size_t a = 0; a < layout_.n; ++a) {
+      gather_neighborhood(candidates_, kernel_, x, y, a, nb);
+      for (std::size_t k = first; k < last; ++k) terms_[k]->apply_particle(f, a, nb);
+    }
+  }
 }
 
 void RhsEvaluator::eval(double t, const double* y, double* ydot) {
@@ -235,12 +269,19 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
     build_candidates(cells_, f.x.data(), two_d ? f.y.data() : nullptr, n, candidates_);
     ref_x_.assign(f.x.begin(), f.x.begin() + n);
     if (two_d) ref_y_.assign(f.y.begin(), f.y.begin() + n);
+    sweep_room_ = max_candidates(candidates_);
     ++rebuilds_;
   }
-  if (lean_pairs_)
-    lean_pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
-  else
-    pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
+  // Pairs for the terms outside the sweep, for IMEX's viscous probes and for whoever reads fields()
+  // after a field refresh (ydot null: diagnostics, the projection); otherwise none are stored.
+  if (pairs_every_eval_ || implicit_viscosity_ || !ydot) {
+    if (lean_pairs_)
+      lean_pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
+    else
+      pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
+  } else {
+    f.pairs.n_real = 0;  // stale: PairList::for_pairs asserts on it
+  }
   timing_.neighbors += seconds_since(t0);
 
   t0 = clock::now();
@@ -251,24 +292,45 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   copy_to_ghosts(f.rho);
   copy_to_ghosts(f.p);
   Term::Stage done = Term::Stage::density;
-  for (std::size_t k = 0; k < terms_.size(); ++k) {
+  for (std::size_t k = 0; k < terms_.size();) {
     const auto& term = terms_[k];
     if (term->stage() != done) {  // entering a later stage: ghosts take their sources' new values
       copy_to_ghosts(f.rho);
       copy_to_ghosts(f.p);
       done = term->stage();
+      if (done == Term::Stage::force) {
+        f.vol.resize(f.n_all);
+#pragma omp parallel for schedule(static)
+        for (std::size_t i = 0; i < f.n_all; ++i) f.vol[i] = f.m[i] / f.rho[i];
+      }
     }
-    if (implicit_viscosity_ && viscous_[k]) continue;  // IMEX: f_I, below
+    if (implicit_viscosity_ && viscous_[k]) {  // IMEX: f_I, below
+      ++k;
+      continue;
+    }
+    if (sweep_ && term->per_particle()) {  // this term and the per-particle ones after it: one sweep
+      std::size_t last = k + 1;
+      while (last < terms_.size() && terms_[last]->per_particle() && terms_[last]->stage() == done &&
+             !(implicit_viscosity_ && viscous_[last]))
+        ++last;
+      force_sweep(k, last);
+      k = last;
+      continue;
+    }
     term->apply(f);
+    ++k;
   }
   copy_to_ghosts(f.rho);
   copy_to_ghosts(f.p);
   if (implicit_viscosity_) apply_viscous_terms(visc_u_, visc_v_);
 
-  double amax = 0;
-  for (std::size_t a = 0; a < n; ++a)
-    amax = std::max(amax, std::hypot(f.dudt[a], two_d ? f.dvdt[a] : 0.0));
-  max_accel_ = amax;
+  double amax2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : amax2)
+  for (std::size_t a = 0; a < n; ++a) {
+    const double ax = f.dudt[a], ay = two_d ? f.dvdt[a] : 0.0;
+    amax2 = std::max(amax2, ax * ax + ay * ay);
+  }
+  max_accel_ = std::sqrt(amax2);
 
   if (ydot) {
     for (int k = 0; k < layout_.dim; ++k) {

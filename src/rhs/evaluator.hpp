@@ -11,6 +11,7 @@
 #include "core/particles.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbors/cell_list.hpp"
+#include "neighbors/neighborhood.hpp"
 #include "rhs/fluid_fields.hpp"
 #include "rhs/term.hpp"
 
@@ -67,6 +68,7 @@ class RhsEvaluator {
   void copy_to_ghosts(std::vector<double>& field);
   void ghost_velocities();
   void apply_viscous_terms(std::vector<double>& au, std::vector<double>& av);
+  void force_sweep(std::size_t first, std::size_t last);
 
   StateLayout layout_;
   ParticleSet particles_;
@@ -84,6 +86,10 @@ class RhsEvaluator {
   FluidFields fields_;
   double nu_;
   bool lean_pairs_;  // method.neighbor_storage = "candidates": no per-pair kernel values stored
+  bool sweep_;       // method.force_sweep: per-particle terms share one gathered neighbourhood
+  bool pairs_every_eval_ = true;  // some term or the scheme reads f.pairs: build them at every f
+  std::vector<Neighborhood> scratch_;
+  std::size_t sweep_room_ = 0;  // the largest candidate row since the last rebuild  // force sweep: one neighbourhood buffer per thread
   bool periodic_[2] = {false, false};
   double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;

@@ -1,8 +1,10 @@
 // One physical term of the right-hand side. Each term lives in its own file, named after the term
 // and its source, and is constructed only when the scene needs it (rhs/terms_from_scene.cpp).
 #pragma once
+#include <cstddef>
 #include <string>
 
+#include "neighbors/neighborhood.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -16,6 +18,13 @@ class Term {
   virtual std::string name() const = 0;  // "kind:model", listed in summary.json "terms"
   virtual Stage stage() const = 0;
   virtual void apply(FluidFields& f) const = 0;
+  // Whether apply() walks f.pairs (an equation of state or a body force does not).
+  virtual bool uses_neighbors() const { return true; }
+  // Terms that only read neighbours and add to real particle a's derivatives (rhs/particle_term.hpp)
+  // can also be applied one particle at a time from a gathered neighbourhood: the evaluator then
+  // runs consecutive such terms in one sweep over the particles (method.force_sweep).
+  virtual bool per_particle() const { return false; }
+  virtual void apply_particle(FluidFields&, std::size_t, const Neighborhood&) const {}
 };
 
 }  // namespace arksph

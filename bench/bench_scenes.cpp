@@ -6,7 +6,7 @@
 
 namespace arksph::bench {
 
-Scene periodic_box(int n, const std::string& scheme) {
+Scene periodic_box(int n, const std::string& scheme, const std::vector<std::string>& sets) {
   std::ostringstream s;
   s.precision(17);
   s << "[scene]\nname = \"bench_box\"\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n"
@@ -19,17 +19,18 @@ Scene periodic_box(int n, const std::string& scheme) {
     << (scheme == "wcsph" ? "sound_speed = 10\n" : "")
     << "[time]\nend = 1.0\n";
   std::ostringstream warnings;
-  return read_scene_text(s.str(), "<bench>", {}, warnings);
+  return read_scene_text(s.str(), "<bench>", sets, warnings);
 }
 
-Prepared prepare(int n, const std::string& scheme) {
+Prepared prepare(int n, const std::string& scheme, const std::vector<std::string>& sets) {
   Prepared p;
-  p.scene = periodic_box(n, scheme);
+  p.scene = periodic_box(n, scheme, sets);
   p.model = build_model(p.scene);
   p.y.assign(p.model.rhs->layout().size(), 0.0);
   p.ydot.assign(p.y.size(), 0.0);
   p.model.rhs->initial_state(p.y.data());
   p.model.rhs->eval(0.0, p.y.data(), p.ydot.data());
+  p.model.rhs->eval(0.0, p.y.data(), nullptr);  // a field refresh: fields() keep their pair list
   return p;
 }
 

@@ -10,7 +10,7 @@
 
 namespace arksph::bench {
 
-Scene periodic_box(int n, const std::string& scheme);
+Scene periodic_box(int n, const std::string& scheme, const std::vector<std::string>& sets = {});
 
 // A model with its state at t = 0 and one right-hand-side evaluation done (pairs, ghosts, fields).
 struct Prepared {
@@ -18,6 +18,6 @@ struct Prepared {
   Model model;
   std::vector<double> y, ydot;
 };
-Prepared prepare(int n, const std::string& scheme);
+Prepared prepare(int n, const std::string& scheme, const std::vector<std::string>& sets = {});
 
 }  // namespace arksph::bench

@@ -4,5 +4,6 @@
 set -eu
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+# ARKSPH_NATIVE: compiled for this machine's CPU (the build and the runs share it; see CMakeLists.txt).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DARKSPH_NATIVE=ON
 cmake --build build -j"$(nproc)"

@@ -15,7 +15,7 @@ class EquationOfStateTait final : public Term {
   Stage stage() const override { return Stage::pressure; }
   bool uses_neighbors() const override { return false; }
   void apply(FluidFields& f) const override {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (f.n_real > 5000)  // one pow a particle: a thread wake-up below
     for (std::size_t a = 0; a < f.n_real; ++a) {
       const double ratio = f.rho[a] / f.rho0[a];
       const double stiffness = c2_ * f.rho0[a] / gamma_;

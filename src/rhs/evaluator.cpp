@@ -11,6 +11,10 @@
 namespace arksph {
 
 namespace {
+// Loops of a few operations per particle run on one thread below this size: waking the other
+// threads (futex, with passive waiting) costs more than the loop itself.
+constexpr std::size_t kCheapLoopParallelMin = 20000;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -101,7 +105,7 @@ void RhsEvaluator::load_state(double t, const double* y) {
     std::vector<double>& c = k == 0 ? f.x : f.y;
     const double lo = lo_[k], len = len_[k];
     double* v = c.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kCheapLoopParallelMin)
     for (std::size_t a = 0; a < n; ++a)
       if (v[a] < lo || v[a] >= lo + len) v[a] = lo + (v[a] - lo) - len * std::floor((v[a] - lo) / len);
   }
@@ -217,7 +221,7 @@ bool RhsEvaluator::needs_rebuild() const {
   const FluidFields& f = fields_;
   const bool two_d = layout_.dim == 2;
   double moved2 = 0.0;  // NaN positions compare false: caught by the state checks, not here
-#pragma omp parallel for schedule(static) reduction(max : moved2)
+#pragma omp parallel for schedule(static) reduction(max : moved2) if (n > kCheapLoopParallelMin)
   for (std::size_t a = 0; a < n; ++a) {
     const double dx = f.x[a] - ref_x_[a], dy = two_d ? f.y[a] - ref_y_[a] : 0.0;
     moved2 = std::max(moved2, dx * dx + dy * dy);
@@ -300,7 +304,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
       done = term->stage();
       if (done == Term::Stage::force) {
         f.vol.resize(f.n_all);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (f.n_all > kCheapLoopParallelMin)
         for (std::size_t i = 0; i < f.n_all; ++i) f.vol[i] = f.m[i] / f.rho[i];
       }
     }
@@ -325,7 +329,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   if (implicit_viscosity_) apply_viscous_terms(visc_u_, visc_v_);
 
   double amax2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : amax2)
+#pragma omp parallel for schedule(static) reduction(max : amax2) if (n > kCheapLoopParallelMin)
   for (std::size_t a = 0; a < n; ++a) {
     const double ax = f.dudt[a], ay = two_d ? f.dvdt[a] : 0.0;
     amax2 = std::max(amax2, ax * ax + ay * ay);

@@ -40,8 +40,8 @@ bool ParticleReorder::sort(double* y, std::vector<double>& d0) {
   bool identity = true;
   for (std::size_t i = 0; i < from.size() && identity; ++i) identity = from[i] == i;
   if (!identity) {
+    permute_model(model_, from);  // first: it frees the neighbour lists before any temporary is made
     permute_state(model_.rhs->layout(), y, from);
-    permute_model(model_, from);
     permute(d0, from);
     ++count_;
   }

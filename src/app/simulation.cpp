@@ -106,6 +106,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
 
   // Output at t = 0, every `every`, and the end time exactly.
   if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
+  std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
   double t = checkpoints.start_time();
   int frame = checkpoints.first_frame();
   RunResult result;

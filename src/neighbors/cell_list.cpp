@@ -126,7 +126,7 @@ void build_candidates(const CellList& cells, const double* x, const double* y, s
     cand.count[a] = k;
   }
   const std::size_t total = row_starts(cand.count, cand.start);
-  if (cand.j.size() < total) PairList::regrow(cand.j, total + total / 16);
+  if (cand.j.size() < total) PairList::regrow(cand.j, total + total / 64);
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n_real; ++a) {
     std::size_t k = cand.start[a];

@@ -70,6 +70,11 @@ std::vector<std::string> RhsEvaluator::term_names() const {
 }
 
 void RhsEvaluator::permute_particles(const std::vector<std::uint32_t>& from) {
+  // The neighbour lists are rebuilt at the next eval anyway: free them first, so that the
+  // permutation's temporaries do not add to them at the run's peak of memory.
+  candidates_ = CandidateList{};
+  fields_.pairs = PairList{};
+  cells_ = CellList{};
   permute(particles_, from);
   permute(fields_.rho0, from);
   permute(visc_u_, from);  // IMEX f_I of the last eval, in the new order
@@ -129,6 +134,14 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   }
   const std::size_t ng = ghosts_.size();
   f.n_all = n + ng;
+  // Room for the ghosts without the doubling of a growing vector (about 20 arrays of n_all).
+  auto room = [&](auto& field) {
+    if (field.capacity() < f.n_all) field.reserve(f.n_all + f.n_all / 64);
+  };
+  for (auto* field : {&f.x, &f.u, &f.ud, &f.m, &f.rho, &f.p, &f.nu, &f.vol, &f.flip_x}) room(*field);
+  if (two_d)
+    for (auto* field : {&f.y, &f.v, &f.vd, &f.flip_y}) room(*field);
+  room(f.src);
   f.x.insert(f.x.end(), ghosts_.x.begin(), ghosts_.x.end());
   if (two_d) f.y.insert(f.y.end(), ghosts_.y.begin(), ghosts_.y.end());
   f.u.resize(f.n_all);
@@ -271,6 +284,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   if (rebuild) {
     cells_.build(f.x.data(), two_d ? f.y.data() : nullptr, f.n_all, kernel_.radius() + skin_);
     build_candidates(cells_, f.x.data(), two_d ? f.y.data() : nullptr, n, candidates_);
+    cells_ = CellList{};  // needed again only at the next rebuild: ~21 bytes a point less meanwhile
     ref_x_.assign(f.x.begin(), f.x.begin() + n);
     if (two_d) ref_y_.assign(f.y.begin(), f.y.begin() + n);
     sweep_room_ = max_candidates(candidates_);
@@ -278,8 +292,10 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   }
   // Pairs for the terms outside the sweep, for IMEX's viscous probes and for whoever reads fields()
   // after a field refresh (ydot null: diagnostics, the projection); otherwise none are stored.
+  // When only a refresh needs them, the lean form (kernel evaluated on each visit, same values):
+  // the diagnostics walk them once, and no per-pair arrays are ever allocated.
   if (pairs_every_eval_ || implicit_viscosity_ || !ydot) {
-    if (lean_pairs_)
+    if (lean_pairs_ || (!pairs_every_eval_ && !implicit_viscosity_))
       lean_pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
     else
       pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);

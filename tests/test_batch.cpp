@@ -35,18 +35,6 @@ Outcome run_binary(const std::string& args, const testing::ScratchDir& scratch) 
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, testing::slurp(err)};
 }
 
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(testing::slurp(path));
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> row;
-    std::istringstream ls(line);
-    for (std::string cell; std::getline(ls, cell, ',');) row.push_back(cell);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 int column(const std::vector<std::string>& header, const std::string& name) {
   for (std::size_t i = 0; i < header.size(); ++i)
     if (header[i] == name) return static_cast<int>(i);
@@ -139,7 +127,7 @@ TEST_CASE("batch: the CI sweep runs 12 runs ok, and a second invocation skips th
   const std::string out = scratch / "ci";
   const Outcome first = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
   CHECK(first.code == 0);
-  const auto rows = read_csv(out + "/batch.csv");
+  const auto rows = testing::read_csv(out + "/batch.csv");
   REQUIRE(rows.size() == 13);  // header + 12 runs
   const int status = column(rows[0], "status"), skipped = column(rows[0], "skipped"),
             kernel = column(rows[0], "method.kernel"), ke = column(rows[0], "kinetic_energy");
@@ -159,7 +147,7 @@ TEST_CASE("batch: the CI sweep runs 12 runs ok, and a second invocation skips th
 
   const Outcome second = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
   CHECK(second.code == 0);
-  const auto again = read_csv(out + "/batch.csv");
+  const auto again = testing::read_csv(out + "/batch.csv");
   REQUIRE(again.size() == 13);
   for (std::size_t r = 1; r < again.size(); ++r) {
     CHECK(again[r][skipped] == "1");
@@ -176,7 +164,7 @@ TEST_CASE("batch: a failing run gives a non-zero exit, a bad value is a bad swee
                                        << "\"\nset = [\"time.end=0.02\"]\n[[vary]]\nkey = \"time.max_steps\"\nvalues = [1, 100000]\n";
   const Outcome o = run_binary("batch " + (scratch / "fail.toml") + " --out " + (scratch / "out"), scratch);
   CHECK(o.code == 3);
-  const auto rows = read_csv(scratch / "out/batch.csv");
+  const auto rows = testing::read_csv(scratch / "out/batch.csv");
   REQUIRE(rows.size() == 3);
   const int status = column(rows[0], "status"), code = column(rows[0], "exit_code");
   CHECK(rows[1][status] == "failed");

@@ -90,6 +90,19 @@ inline std::string slurp(const std::string& path) {
   return ss.str();
 }
 
+// The cells of a comma-separated file, row by row (no quoting: the files arksph writes need none).
+inline std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(slurp(path));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> row;
+    std::istringstream ls(line);
+    for (std::string cell; std::getline(ls, cell, ',');) row.push_back(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 // One fixed step of the scene's ERKStep table followed by the projection (the run loop's step for
 // scheme isph), from the initial state y0 (filled here). Returns the state after the step.
 inline std::vector<double> one_projected_step(const Scene& scene, Model& model, std::vector<double>& y0) {

@@ -37,17 +37,6 @@ ParticleVelocities lattice(int n, Fu fu, Fv fv) {
   return p;
 }
 
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(testing::slurp(path));
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> row;
-    std::istringstream ls(line);
-    for (std::string cell; std::getline(ls, cell, ',');) row.push_back(cell);
-    rows.push_back(row);
-  }
-  return rows;
-}
 }  // namespace
 
 TEST_CASE("work-precision: errors against an analytic field are the mean, r.m.s. and max of |u - u_exact|") {
@@ -115,7 +104,7 @@ TEST_CASE("work-precision: the tiny Taylor-Green study writes its CSV, errors fa
   const int status = std::system(cmd.c_str());
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 0);
-  const auto rows = read_csv(out + "/work_precision.csv");
+  const auto rows = testing::read_csv(out + "/work_precision.csv");
   REQUIRE(rows.size() == 7);  // header + 2 schemes x 3 resolutions
   CHECK(rows[0] == std::vector<std::string>{"scheme", "resolution", "particles", "wall_seconds", "steps", "rhs_evals",
                                             "error_l1", "error_l2", "error_linf", "status", "run"});

@@ -280,8 +280,8 @@ void read_method(const Section& root, Scene& s) {
   // "pairs": W and F stored per pair (fast); "candidates": only the Verlet candidates are stored and
   // every term evaluates the kernel again (about 1 KB per particle less than 2, slower)
   s.neighbor_storage = m.one_of("neighbor_storage", {"pairs", "candidates"}, s.neighbor_storage);
-  // true: the force terms that sum over one particle's neighbours run in one sweep, each particle's
-  // neighbours and kernel values gathered once into a small buffer (no per-pair storage for wcsph);
+  // true (wcsph): the force terms that sum over one particle's neighbours run in one sweep, each
+  // particle's neighbours and kernel values gathered once into a small buffer (no per-pair storage);
   // false: each term walks the stored pair list on its own. Same results bit for bit.
   s.force_sweep = m.boolean("force_sweep", s.force_sweep);
   // A constant added to P after the level is fixed (a background pressure: with eq. 11's symmetric

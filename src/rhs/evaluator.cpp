@@ -28,7 +28,9 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
       nu_(scene.viscosity),
       lean_pairs_(scene.neighbor_storage == "candidates"),
-      sweep_(scene.force_sweep) {
+      // The projection schemes store the pair list for their Poisson step anyway: their few force
+      // terms walk it rather than gather the same neighbours and kernel values a second time.
+      sweep_(scene.force_sweep && scene.scheme == "wcsph") {
   // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
   skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
@@ -49,7 +51,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   for (const auto& t : terms_) viscous_.push_back(t->name().rfind("viscosity:", 0) == 0);
   // The pair list is built at every f unless the sweep covers every term that walks neighbours and
   // nothing else reads the pairs afterwards (the projection schemes do).
-  pairs_every_eval_ = !sweep_ || scene.scheme != "wcsph";
+  pairs_every_eval_ = !sweep_;
   for (const auto& t : terms_)
     if (t->uses_neighbors() && !t->per_particle()) pairs_every_eval_ = true;
   fields_.dim = particles.dim;

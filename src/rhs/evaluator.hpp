@@ -86,7 +86,7 @@ class RhsEvaluator {
   FluidFields fields_;
   double nu_;
   bool lean_pairs_;  // method.neighbor_storage = "candidates": no per-pair kernel values stored
-  bool sweep_;       // method.force_sweep: per-particle terms share one gathered neighbourhood
+  bool sweep_;       // method.force_sweep (wcsph): per-particle terms share one gathered neighbourhood
   bool pairs_every_eval_ = true;  // some term or the scheme reads f.pairs: build them at every f
   std::vector<Neighborhood> scratch_;
   std::size_t sweep_room_ = 0;  // the largest candidate row since the last rebuild  // force sweep: one neighbourhood buffer per thread

@@ -34,10 +34,7 @@ Scene periodic_scene(double spacing, const std::vector<std::string>& extra = {})
 
 PoissonSystem system_of(const Scene& scene) {
   Model model = build_model(scene);
-  std::vector<double> y0(model.rhs->layout().size());
-  model.rhs->initial_state(y0.data());
-  model.rhs->eval(0.0, y0.data(), nullptr);
-  const FluidFields& f = model.rhs->fields();
+  const FluidFields& f = testing::fields_at_start(model);
   return assemble_ppe(f, divergence_cummins_rudman(f), 0.01);
 }
 

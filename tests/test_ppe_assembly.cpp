@@ -47,10 +47,7 @@ TEST_CASE("ppe assembly: the compressed matrix applies the C&R eq. 19 Laplacian"
     std::ostringstream warnings;
     const Scene scene = read_scene_text(kChannel, "<test>", {spacing}, warnings);
     Model model = build_model(scene);
-    std::vector<double> y0(model.rhs->layout().size());
-    model.rhs->initial_state(y0.data());
-    model.rhs->eval(0.0, y0.data(), nullptr);
-    const FluidFields& f = model.rhs->fields();
+    const FluidFields& f = testing::fields_at_start(model);
     const PoissonSystem sys = assemble_ppe(f, divergence_cummins_rudman(f), 0.01);
     const std::size_t n = f.n_real;
     REQUIRE(sys.A.rows() == static_cast<long>(n));

@@ -90,6 +90,14 @@ inline std::string slurp(const std::string& path) {
   return ss.str();
 }
 
+// The model's fields at its initial state (a field refresh: the pair list is built and kept).
+inline const FluidFields& fields_at_start(Model& model) {
+  std::vector<double> y0(model.rhs->layout().size());
+  model.rhs->initial_state(y0.data());
+  model.rhs->eval(0.0, y0.data(), nullptr);
+  return model.rhs->fields();
+}
+
 // The cells of a comma-separated file, row by row (no quoting: the files arksph writes need none).
 inline std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   std::vector<std::vector<std::string>> rows;

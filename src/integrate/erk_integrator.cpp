@@ -1,4 +1,5 @@
 #include "integrate/erk_integrator.hpp"
+#include "integrate/serial_vector.hpp"
 
 #include <arkode/arkode_butcher_erk.h>
 #include <arkode/arkode_erkstep.h>
@@ -84,7 +85,7 @@ ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, doubl
     : f_(std::move(f)), stab_(opt.stability), post_(opt.postprocess), post_stage_(opt.postprocess_stage), n_(y0.size()), t_(t0),
       fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt) {
   check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
-  y_ = N_VNew_Serial(static_cast<sunindextype>(n_), ctx_);
+  y_ = new_serial_vector(static_cast<sunindextype>(n_), ctx_);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
   mem_ = ERKStepCreate(&ErkIntegrator::rhs_cb, t0, y_, ctx_);
   if (!mem_) throw NumericalFailure("ARKODE: ERKStepCreate failed");

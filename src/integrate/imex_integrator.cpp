@@ -1,4 +1,5 @@
 #include "integrate/imex_integrator.hpp"
+#include "integrate/serial_vector.hpp"
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher_dirk.h>
@@ -64,8 +65,8 @@ ImexIntegrator::ImexIntegrator(ImexFunctions f, const std::vector<double>& y0, d
   const PairInfo& pair = pair_info(opt.pair);
   check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
   const auto n = static_cast<sunindextype>(n_);
-  y_ = N_VNew_Serial(n, ctx_);
-  frozen_ = N_VNew_Serial(n, ctx_);
+  y_ = new_serial_vector(n, ctx_);
+  frozen_ = new_serial_vector(n, ctx_);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
   mem_ = ARKStepCreate(&ImexIntegrator::fe_cb, &ImexIntegrator::fi_cb, t0, y_, ctx_);
   if (!mem_) throw NumericalFailure("ARKODE: ARKStepCreate failed");

@@ -1,4 +1,5 @@
 #include "projection/correction_kinsol.hpp"
+#include "integrate/serial_vector.hpp"
 
 #include <kinsol/kinsol.h>
 #include <nvector/nvector_serial.h>
@@ -104,8 +105,8 @@ KinsolCorrectionResult correct_density_kinsol(RhsEvaluator& rhs, double t, doubl
 
   SUNContext ctx = nullptr;
   SUNContext_Create(nullptr, &ctx);
-  N_Vector u = N_VNew_Serial(static_cast<sunindextype>(n), ctx);
-  N_Vector scale = N_VNew_Serial(static_cast<sunindextype>(n), ctx);
+  N_Vector u = new_serial_vector(static_cast<sunindextype>(n), ctx);
+  N_Vector scale = new_serial_vector(static_cast<sunindextype>(n), ctx);
   N_VConst(0.0, u);
   N_VConst(1.0, scale);
   SUNMatrix J = SUNSparseMatrix(static_cast<sunindextype>(n), static_cast<sunindextype>(n), P.A.nonZeros(), CSR_MAT, ctx);

@@ -115,23 +115,56 @@ void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, c
 
 namespace arksph {
 
+namespace {
+// Candidates of a among the points of sorted entries [lo, hi): the same test as for_each_near
+// (dx^2 + dy^2 < r2, self excluded), written without a branch so that the count vectorises.
+struct CandidateTest {
+  const double *sx, *sy;
+  const std::uint32_t* point;
+  double r2;
+  bool accept(std::uint32_t k, double xa, double ya, std::uint32_t a) const {
+    const double dx = xa - sx[k], dy = sy ? ya - sy[k] : 0.0;
+    return (dx * dx + dy * dy < r2) & (point[k] != a);
+  }
+};
+}  // namespace
+
 void build_candidates(const CellList& cells, const double* x, const double* y, std::size_t n_real,
                       CandidateList& cand) {
   cand.n_real = n_real;
   cand.count.assign(n_real, 0);
+  const CandidateTest test{cells.sorted_x(), cells.sorted_y(), cells.point(), cells.radius2()};
+  // Pass 1: count.
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n_real; ++a) {
+    const double xa = x[a], ya = y ? y[a] : 0.0;
+    const auto self = static_cast<std::uint32_t>(a);
     std::uint32_t k = 0;
-    cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) { k += b != a ? 1 : 0; });
+    cells.for_each_run(xa, ya, [&](std::uint32_t lo, std::uint32_t hi) {
+      for (std::uint32_t s = lo; s < hi; ++s) k += test.accept(s, xa, ya, self) ? 1 : 0;
+    });
     cand.count[a] = k;
   }
   const std::size_t total = row_starts(cand.count, cand.start);
   if (cand.j.size() < total) PairList::regrow(cand.j, total + total / 64);
+  std::uint32_t* __restrict cj = cand.j.data();
+  // Pass 2: fill a's row by branch-free compaction (every entry is written, the next one overwrites
+  // a rejected one). Stopping once the row is full keeps the writes inside it, where no other
+  // thread writes.
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n_real; ++a) {
-    std::size_t k = cand.start[a];
-    cells.for_each_near(x[a], y ? y[a] : 0.0, [&](std::uint32_t b, double, double) {
-      if (b != a) cand.j[k++] = b;
+    std::size_t pos = cand.start[a];
+    const std::size_t end = pos + cand.count[a];
+    const double xa = x[a], ya = y ? y[a] : 0.0;
+    const auto self = static_cast<std::uint32_t>(a);
+    cells.for_each_run(xa, ya, [&, test](std::uint32_t lo, std::uint32_t hi) {
+      std::size_t p = pos;  // locals: the stores to cj cannot then alias them
+      std::uint32_t* __restrict out = cj;
+      for (std::uint32_t s = lo; s < hi && p < end; ++s) {
+        out[p] = test.point[s];
+        p += test.accept(s, xa, ya, self) ? 1 : 0;
+      }
+      pos = p;
     });
   }
 }

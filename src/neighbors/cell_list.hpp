@@ -19,17 +19,28 @@ class CellList {
   // sorted by cell, so the three cells of a stencil row are one contiguous range.
   template <class Visit>
   void for_each_near(double px, double py, Visit&& visit) const {
-    const long cx = cell_coord(px, x0_), cy = two_d_ ? cell_coord(py, y0_) : 0;
-    const long x_lo = std::max(cx - 1, 0L), x_hi = std::min(cx + 1, nx_ - 1);
-    for (long jy = std::max(cy - 1, 0L); jy <= std::min(cy + 1, ny_ - 1); ++jy) {
-      const std::uint32_t k_begin = start_[static_cast<std::size_t>(jy * nx_ + x_lo)];
-      const std::uint32_t k_end = start_[static_cast<std::size_t>(jy * nx_ + x_hi) + 1];
+    for_each_run(px, py, [&](std::uint32_t k_begin, std::uint32_t k_end) {
       for (std::uint32_t k = k_begin; k < k_end; ++k) {
         const double dx = px - sx_[k], dy = two_d_ ? py - sy_[k] : 0.0;
         if (dx * dx + dy * dy < r2_) visit(order_[k], dx, dy);
       }
-    }
+    });
   }
+
+  // Calls run(k_begin, k_end) for each row of the 3 x 3 stencil around (px, py): the sorted points
+  // k_begin .. k_end - 1 (point(), sorted_x(), sorted_y()) are those of the row's three cells. For
+  // loops that test every point without a branch (build_candidates).
+  template <class Run>
+  void for_each_run(double px, double py, Run&& run) const {
+    const long cx = cell_coord(px, x0_), cy = two_d_ ? cell_coord(py, y0_) : 0;
+    const long x_lo = std::max(cx - 1, 0L), x_hi = std::min(cx + 1, nx_ - 1);
+    for (long jy = std::max(cy - 1, 0L); jy <= std::min(cy + 1, ny_ - 1); ++jy)
+      run(start_[static_cast<std::size_t>(jy * nx_ + x_lo)], start_[static_cast<std::size_t>(jy * nx_ + x_hi) + 1]);
+  }
+  const std::uint32_t* point() const { return order_.data(); }  // point index of each sorted entry
+  const double* sorted_x() const { return sx_.data(); }
+  const double* sorted_y() const { return two_d_ ? sy_.data() : nullptr; }
+  double radius2() const { return r2_; }
 
  private:
   // Clamped, so that a point far outside (or NaN) cannot index outside the grid.

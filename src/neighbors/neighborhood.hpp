@@ -6,11 +6,26 @@
 // bit-identical results from either.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "neighbors/cell_list.hpp"
 
 namespace arksph {
+
+// Two-way split sums over a particle's neighbours. A sum accumulated pair after pair is one chain of
+// dependent floating-point additions, and the loop runs at the adder's latency, not its throughput.
+// for_pairs_split hands pair k with the tag Lane<k % 2>; a term adds into s[lane] of a SplitSum, and
+// the two chains overlap. The total s[0] + s[1] depends only on the order of the pairs, which is the
+// same in the pair list and in the gathered neighbourhood, so both give the same bits.
+template <int L>
+using Lane = std::integral_constant<int, L>;
+struct SplitSum {
+  double s[2] = {0.0, 0.0};
+  template <int L>
+  double& operator[](Lane<L>) { return s[L]; }
+  double total() const { return s[0] + s[1]; }
+};
 
 struct alignas(64) Neighborhood {  // one per thread, on its own cache lines (no false sharing of count)
   std::size_t count = 0;
@@ -29,6 +44,18 @@ struct alignas(64) Neighborhood {  // one per thread, on its own cache lines (no
     const std::uint32_t* pb = b.data();
     const double *px = rx.data(), *py = ry.data(), *pr2 = r2.data(), *pw = w.data(), *pf = f.data();
     for (std::size_t k = 0; k < count; ++k) body(pb[k], px[k], py[k], pr2[k], pw[k], pf[k]);
+  }
+  // body(lane, b, rx, ry, r2, W_ab, F_ab), lane = Lane<k % 2> for the k-th neighbour (see SplitSum).
+  template <class Body>
+  void for_pairs_split(Body&& body) const {
+    const std::uint32_t* pb = b.data();
+    const double *px = rx.data(), *py = ry.data(), *pr2 = r2.data(), *pw = w.data(), *pf = f.data();
+    std::size_t k = 0;
+    for (; k + 1 < count; k += 2) {
+      body(Lane<0>{}, pb[k], px[k], py[k], pr2[k], pw[k], pf[k]);
+      body(Lane<1>{}, pb[k + 1], px[k + 1], py[k + 1], pr2[k + 1], pw[k + 1], pf[k + 1]);
+    }
+    if (k < count) body(Lane<0>{}, pb[k], px[k], py[k], pr2[k], pw[k], pf[k]);
   }
 };
 

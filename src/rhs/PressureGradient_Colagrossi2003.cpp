@@ -14,18 +14,18 @@ class PressureGradientColagrossi final : public ParticleTerm<PressureGradientCol
   std::string name() const override { return "pressure_gradient:colagrossi"; }
   template <class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
-    double ax = 0.0, ay = 0.0;
+    SplitSum ax, ay;
     const double p_ref = f.p_avg.empty() ? 0.0 : f.p_avg[a];
     const double pa = f.p[a] - p_ref, inv_rhoa = 1.0 / f.rho[a];
-    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double w, double F) {
+    nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double, double w, double F) {
       double gx, gy;
       corrected_gradient(f, a, rx, ry, w, F, gx, gy);
       const double coeff = f.vol[b] * (pa + f.p[b] - p_ref) * inv_rhoa;  // m_b / (rho_a rho_b) = V_b / rho_a
-      ax -= coeff * gx;
-      ay -= coeff * gy;
+      ax[lane] -= coeff * gx;
+      ay[lane] -= coeff * gy;
     });
-    f.dudt[a] += ax;
-    if (f.dim == 2) f.dvdt[a] += ay;
+    f.dudt[a] += ax.total();
+    if (f.dim == 2) f.dvdt[a] += ay.total();
   }
 };
 

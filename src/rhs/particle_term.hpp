@@ -4,6 +4,7 @@
 // (apply: one parallel loop of its own) or inside the evaluator's force sweep from a gathered
 // Neighborhood (apply_particle), with the same arithmetic in the same order.
 #pragma once
+#include "neighbors/neighborhood.hpp"
 #include "rhs/term.hpp"
 
 namespace arksph {
@@ -15,6 +16,18 @@ struct PairsOf {
   template <class Body>
   void for_pairs(Body&& body) const {
     pairs.for_pairs(a, static_cast<Body&&>(body));
+  }
+  // The lanes of Neighborhood::for_pairs_split, alternating in the same pair order.
+  template <class Body>
+  void for_pairs_split(Body&& body) const {
+    bool odd = false;
+    pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+      if (odd)
+        body(Lane<1>{}, b, rx, ry, r2, w, F);
+      else
+        body(Lane<0>{}, b, rx, ry, r2, w, F);
+      odd = !odd;
+    });
   }
 };
 

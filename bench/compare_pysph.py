@@ -141,6 +141,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     rows = [run_arksph(args, "wcsph", []),
             run_arksph(args, "wcsph_cfl05", ["--set", "time.cfl=0.5"]),
+            run_arksph(args, "wcsph_cfl06", ["--set", "time.cfl=0.6"]),
             run_arksph(args, "wcsph_bs23_cfl075", ["--set", "time.cfl=0.75",
                                                    "--set", "time.integrator=ARKODE_BOGACKI_SHAMPINE_4_2_3"]),
             None if args.skip_isph else run_arksph(args, "isph", ["--set", "method.scheme=isph", "--set", "method.ppe_pressure_level=zero_min",

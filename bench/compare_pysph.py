@@ -145,7 +145,7 @@ def main():
             run_arksph(args, "wcsph_bs23_cfl075", ["--set", "time.cfl=0.75",
                                                    "--set", "time.integrator=ARKODE_BOGACKI_SHAMPINE_4_2_3"]),
             None if args.skip_isph else run_arksph(args, "isph", ["--set", "method.scheme=isph", "--set", "method.ppe_pressure_level=zero_min",
-                                      "--set", "method.ppe_divergence=difference", "--set", "method.ppe_solver=cg",
+                                      "--set", "method.ppe_divergence=difference",
                                       "--set", "time.integrator=ARKSPH_FORWARD_EULER_1_1", "--set", "time.dt=0.002"])]
     rows = [r for r in rows if r is not None]
     if not args.skip_pysph:

@@ -191,6 +191,11 @@ TEST_CASE("scene: --set overrides take effect") {
     CHECK(warnings.str() == "test.toml: method.sound_speed: unused by scheme " + scheme + "\n");
   }
 
+  // The default Poisson solver is chosen by size ("auto"); the exact operator, which is not
+  // symmetric, resolves it to KLU instead (an explicit CG choice with it is an error: bad_scenes/).
+  CHECK(read(def, {"method.scheme=isph"}).ppe_solver == "auto");
+  CHECK(read(def, {"method.scheme=isph", "method.ppe_operator=exact"}).ppe_solver == "klu");
+
   // Intermediate tables are created; the last --set of a key wins.
   s = read(kBase, {"metrics.ghia_re=100", "boundary.left={ kind = \"periodic\" }",
                    "boundary.right.kind=periodic", "time.end=4", "time.end=5"});

@@ -75,7 +75,7 @@ struct Scene {
   bool force_sweep = true;  // wcsph: the per-particle force terms share one neighbourhood gather
   std::string neighbor_storage = "pairs";        // "pairs" (W, F stored) | "candidates" (kernel on the fly)
   double ppe_pressure_offset = 0.0;              // isph: constant added to P after the level (background pressure)
-  std::string ppe_solver = "klu";      // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (README)
+  std::string ppe_solver = "auto";     // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (README)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
   double gpps_spacing = 0.0;           // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing
   double gpps_volume_relaxation = 0.0; // isph-gpps: beta of the cell-volume source term (0: off, Szewc's GPPS)

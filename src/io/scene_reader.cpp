@@ -288,6 +288,7 @@ void read_method(const Section& root, Scene& s) {
   // pairs it pushes disordered particles apart in proportion to their disorder)
   s.ppe_pressure_offset = m.number("ppe_pressure_offset", s.ppe_pressure_offset);
   m.require(s.ppe_pressure_offset >= 0, "ppe_pressure_offset", ">= 0", s.ppe_pressure_offset);
+  if (s.ppe_operator == "exact" && s.ppe_solver == "auto") s.ppe_solver = "klu";  // the only one for it
   if (s.ppe_operator == "exact" && s.ppe_solver != "klu")
     m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
   s.ppe_tolerance = m.number("ppe_tolerance", s.ppe_tolerance);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernels/kernel.hpp"
+#include "neighbors/split_sum.hpp"
 
 namespace arksph {
 
@@ -127,6 +128,35 @@ struct PairList {
       const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
       body(b, rx, ry, rx * rx + ry * ry, w[k], f[k]);
     }
+  }
+  // body(lane, b, rx, ry, r2, W_ab, F_ab) with lane = Lane<k % 2> for a's k-th neighbour (SplitSum).
+  template <class Body>
+  void for_pairs_split(std::size_t a, Body&& body) const {
+    if (a >= n_real) [[unlikely]] pair_list_not_built();
+    if (kernel) {  // lean storage: the pairs are found on the way, so count them
+      bool odd = false;
+      for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+        if (odd)
+          body(Lane<1>{}, b, rx, ry, r2, w, F);
+        else
+          body(Lane<0>{}, b, rx, ry, r2, w, F);
+        odd = !odd;
+      });
+      return;
+    }
+    const double xa = px[a], ya = py ? py[a] : 0.0;
+    const auto visit = [&](auto lane, std::size_t k) {
+      const std::uint32_t b = j[k];
+      const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
+      body(lane, b, rx, ry, rx * rx + ry * ry, w[k], f[k]);
+    };
+    const std::size_t base = start[a], end = base + count[a];
+    std::size_t k = base;
+    for (; k + 1 < end; k += 2) {
+      visit(Lane<0>{}, k);
+      visit(Lane<1>{}, k + 1);
+    }
+    if (k < end) visit(Lane<0>{}, k);
   }
 };
 

@@ -6,26 +6,11 @@
 // bit-identical results from either.
 #pragma once
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 #include "neighbors/cell_list.hpp"
 
 namespace arksph {
-
-// Two-way split sums over a particle's neighbours. A sum accumulated pair after pair is one chain of
-// dependent floating-point additions, and the loop runs at the adder's latency, not its throughput.
-// for_pairs_split hands pair k with the tag Lane<k % 2>; a term adds into s[lane] of a SplitSum, and
-// the two chains overlap. The total s[0] + s[1] depends only on the order of the pairs, which is the
-// same in the pair list and in the gathered neighbourhood, so both give the same bits.
-template <int L>
-using Lane = std::integral_constant<int, L>;
-struct SplitSum {
-  double s[2] = {0.0, 0.0};
-  template <int L>
-  double& operator[](Lane<L>) { return s[L]; }
-  double total() const { return s[0] + s[1]; }
-};
 
 struct alignas(64) Neighborhood {  // one per thread, on its own cache lines (no false sharing of count)
   std::size_t count = 0;

@@ -20,14 +20,7 @@ struct PairsOf {
   // The lanes of Neighborhood::for_pairs_split, alternating in the same pair order.
   template <class Body>
   void for_pairs_split(Body&& body) const {
-    bool odd = false;
-    pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
-      if (odd)
-        body(Lane<1>{}, b, rx, ry, r2, w, F);
-      else
-        body(Lane<0>{}, b, rx, ry, r2, w, F);
-      odd = !odd;
-    });
+    pairs.for_pairs_split(a, static_cast<Body&&>(body));
   }
 };
 

@@ -9,13 +9,13 @@ namespace arksph {
 class ContinuitySzewc final : public ParticleTerm<ContinuitySzewc> {
  public:
   std::string name() const override { return "continuity:szewc19"; }
-  template <class Neighbors>
+  template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum rate;
-    const double ua = f.ud[a], va = f.dim == 2 ? f.vd[a] : 0.0;
+    const double ua = f.ud[a], va = two_d<C>(f) ? f.vd[a] : 0.0;
     nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double, double, double F) {
       const double u_ab = ua - f.ud[b];
-      const double v_ab = f.dim == 2 ? va - f.vd[b] : 0.0;
+      const double v_ab = two_d<C>(f) ? va - f.vd[b] : 0.0;
       rate[lane] += f.m[b] * F * (u_ab * rx + v_ab * ry);  // m_b u_ab . (F r_ab)
     });
     f.drhodt[a] += rate.total();

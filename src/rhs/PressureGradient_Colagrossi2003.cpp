@@ -12,20 +12,22 @@ namespace arksph {
 class PressureGradientColagrossi final : public ParticleTerm<PressureGradientColagrossi> {
  public:
   std::string name() const override { return "pressure_gradient:colagrossi"; }
-  template <class Neighbors>
+  template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum ax, ay;
-    const double p_ref = f.p_avg.empty() ? 0.0 : f.p_avg[a];
+    const double p_ref = C::plain || f.p_avg.empty() ? 0.0 : f.p_avg[a];
     const double pa = f.p[a] - p_ref, inv_rhoa = 1.0 / f.rho[a];
     nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double, double w, double F) {
       double gx, gy;
-      corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-      const double coeff = f.vol[b] * (pa + f.p[b] - p_ref) * inv_rhoa;  // m_b / (rho_a rho_b) = V_b / rho_a
+      corrected_gradient(C{}, f, a, rx, ry, w, F, gx, gy);
+      // m_b / (rho_a rho_b) = V_b / rho_a; without pressure reduction p_ref = 0, and x - 0 = x
+      const double p_sum = C::plain ? pa + f.p[b] : pa + f.p[b] - p_ref;
+      const double coeff = f.vol[b] * p_sum * inv_rhoa;
       ax[lane] -= coeff * gx;
       ay[lane] -= coeff * gy;
     });
     f.dudt[a] += ax.total();
-    if (f.dim == 2) f.dvdt[a] += ay.total();
+    if (two_d<C>(f)) f.dvdt[a] += ay.total();
   }
 };
 

@@ -12,12 +12,12 @@ namespace arksph {
 class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
  public:
   std::string name() const override { return "viscosity:morris"; }
-  template <class Neighbors>
+  template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum ax, ay;
     const double mu_a = f.rho[a] * f.nu[a], inv_rho_a = 1.0 / f.rho[a];
-    const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
-    const bool corrected = f.correction != FluidFields::Correction::none;
+    const double ua = f.u[a], va = two_d<C>(f) ? f.v[a] : 0.0;
+    const bool corrected = !C::plain && f.correction != FluidFields::Correction::none;
     nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double r2, double w, double F) {
       if (corrected) {
         double gx, gy;
@@ -27,10 +27,10 @@ class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
       const double mu_sum = mu_a + f.rho[b] * f.nu[b];
       const double coeff = f.vol[b] * mu_sum * inv_rho_a * F;  // m_b / (rho_a rho_b) = V_b / rho_a
       ax[lane] += coeff * (ua - f.u[b]);
-      if (f.dim == 2) ay[lane] += coeff * (va - f.v[b]);
+      if (two_d<C>(f)) ay[lane] += coeff * (va - f.v[b]);
     });
     f.dudt[a] += ax.total();
-    if (f.dim == 2) f.dvdt[a] += ay.total();
+    if (two_d<C>(f)) f.dvdt[a] += ay.total();
   }
 };
 

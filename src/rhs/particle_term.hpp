@@ -24,18 +24,50 @@ struct PairsOf {
   }
 };
 
+// What a term's pair loop may take as known at compile time. PlainPairs: two dimensions, no kernel
+// correction and no pressure reduction (the WCSPH default), so that the loop tests none of them per
+// pair; GeneralPairs: tested per pair. Both give the same bits where both apply.
+struct GeneralPairs {
+  static constexpr bool plain = false;
+};
+struct PlainPairs {
+  static constexpr bool plain = true;
+};
+// Tests turn the plain loops off to compare them with the general ones (same bits expected).
+inline bool g_allow_plain_pairs = true;
+inline bool plain_pairs(const FluidFields& f) {
+  return g_allow_plain_pairs && f.dim == 2 && f.correction == FluidFields::Correction::none && f.p_avg.empty();
+}
+template <class C>
+bool two_d(const FluidFields& f) {
+  return C::plain || f.dim == 2;
+}
+
 template <class Derived>
 class ParticleTerm : public Term {
  public:
   Stage stage() const override { return Stage::force; }
   bool per_particle() const override { return true; }
   void apply(FluidFields& f) const override {
-    const Derived& self = static_cast<const Derived&>(*this);
 #pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < f.n_real; ++a) self.particle(f, a, PairsOf{f.pairs, a});
+    for (std::size_t a = 0; a < f.n_real; ++a) run(f, a, PairsOf{f.pairs, a});
   }
-  void apply_particle(FluidFields& f, std::size_t a, const Neighborhood& nb) const override {
-    static_cast<const Derived&>(*this).particle(f, a, nb);
+  void apply_particle(FluidFields& f, std::size_t a, const Neighborhood& nb) const override { run(f, a, nb); }
+
+ private:
+  // A term whose particle() takes the pair configuration (particle<C>) gets the plain one when the
+  // fields allow it; the others run as written.
+  template <class Neighbors>
+  void run(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    const Derived& self = static_cast<const Derived&>(*this);
+    if constexpr (requires { self.template particle<PlainPairs>(f, a, nb); }) {
+      if (plain_pairs(f))
+        self.template particle<PlainPairs>(f, a, nb);
+      else
+        self.template particle<GeneralPairs>(f, a, nb);
+    } else {
+      self.particle(f, a, nb);
+    }
   }
 };
 

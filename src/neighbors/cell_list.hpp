@@ -145,18 +145,11 @@ struct PairList {
       return;
     }
     const double xa = px[a], ya = py ? py[a] : 0.0;
-    const auto visit = [&](auto lane, std::size_t k) {
+    visit_in_lanes(start[a], start[a] + count[a], [&](auto lane, std::size_t k) {
       const std::uint32_t b = j[k];
       const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
       body(lane, b, rx, ry, rx * rx + ry * ry, w[k], f[k]);
-    };
-    const std::size_t base = start[a], end = base + count[a];
-    std::size_t k = base;
-    for (; k + 1 < end; k += 2) {
-      visit(Lane<0>{}, k);
-      visit(Lane<1>{}, k + 1);
-    }
-    if (k < end) visit(Lane<0>{}, k);
+    });
   }
 };
 

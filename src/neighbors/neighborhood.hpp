@@ -35,12 +35,7 @@ struct alignas(64) Neighborhood {  // one per thread, on its own cache lines (no
   void for_pairs_split(Body&& body) const {
     const std::uint32_t* pb = b.data();
     const double *px = rx.data(), *py = ry.data(), *pr2 = r2.data(), *pw = w.data(), *pf = f.data();
-    std::size_t k = 0;
-    for (; k + 1 < count; k += 2) {
-      body(Lane<0>{}, pb[k], px[k], py[k], pr2[k], pw[k], pf[k]);
-      body(Lane<1>{}, pb[k + 1], px[k + 1], py[k + 1], pr2[k + 1], pw[k + 1], pf[k + 1]);
-    }
-    if (k < count) body(Lane<0>{}, pb[k], px[k], py[k], pr2[k], pw[k], pf[k]);
+    visit_in_lanes(0, count, [&](auto lane, std::size_t k) { body(lane, pb[k], px[k], py[k], pr2[k], pw[k], pf[k]); });
   }
 };
 

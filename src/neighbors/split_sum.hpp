@@ -1,5 +1,6 @@
 // Two-way split sums over a particle's neighbours (used by Neighborhood and PairList).
 #pragma once
+#include <cstddef>
 #include <type_traits>
 
 namespace arksph {
@@ -17,5 +18,17 @@ struct SplitSum {
   double& operator[](Lane<L>) { return s[L]; }
   double total() const { return s[0] + s[1]; }
 };
+
+// visit(Lane<(k - begin) % 2>{}, k) for k = begin .. end - 1, unrolled by two: the one place where
+// the lanes are assigned for a stored row (Neighborhood, PairList).
+template <class Visit>
+inline void visit_in_lanes(std::size_t begin, std::size_t end, Visit&& visit) {
+  std::size_t k = begin;
+  for (; k + 1 < end; k += 2) {
+    visit(Lane<0>{}, k);
+    visit(Lane<1>{}, k + 1);
+  }
+  if (k < end) visit(Lane<0>{}, k);
+}
 
 }  // namespace arksph

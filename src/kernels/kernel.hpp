@@ -80,6 +80,13 @@ class Kernel {
   // Same values as eval(sqrt(r2[i]), ...).
   // One squared distance, bit-identical to eval_many (the lean pair storage relies on it).
   void eval_r2(double r2, double& w, double& f) const { eval_many(1, &r2, &w, &f); }
+  // The same from separations (rx[i], ry[i]) -> r2 = rx^2 + ry^2; w null: (dW/dr)/r only.
+  void eval_many_xy(std::size_t n, const double* rx, const double* ry, double* w, double* f) const {
+    if (w)
+      eval_many_xy_with<true>(n, rx, ry, w, f);
+    else
+      eval_many_xy_with<false>(n, rx, ry, w, f);
+  }
   void eval_many(std::size_t n, const double* r2, double* w, double* f) const {
     switch (shape_) {
       case KernelShapeId::cubic_spline: return eval_many_as<CubicSpline>(n, r2, w, f);
@@ -98,6 +105,28 @@ class Kernel {
       double df;
       Shape::eval(q, fq, df);
       g = q > 0 ? df / q : 0.0;
+    }
+  }
+  template <class Shape, bool with_w>
+  void eval_many_xy_as(std::size_t n, const double* rx, const double* ry, double* w, double* f) const {
+    const double inv_h = inv_h_, norm = norm_, norm_inv_h2 = norm_inv_h2_;
+    // As eval_many_as, with r2 = rx^2 + ry^2 computed here (the operations of every pair loop).
+#pragma omp simd
+    for (std::size_t i = 0; i < n; ++i) {
+      const double rr = rx[i] * rx[i] + ry[i] * ry[i];
+      double fq, g;
+      over_q<Shape>(std::sqrt(rr) * inv_h, fq, g);
+      if constexpr (with_w) w[i] = norm * fq;
+      f[i] = rr > 0 ? norm_inv_h2 * g : 0.0;
+    }
+  }
+  template <bool with_w>
+  void eval_many_xy_with(std::size_t n, const double* rx, const double* ry, double* w, double* f) const {
+    switch (shape_) {
+      case KernelShapeId::cubic_spline: return eval_many_xy_as<CubicSpline, with_w>(n, rx, ry, w, f);
+      case KernelShapeId::quartic_spline: return eval_many_xy_as<QuarticSpline, with_w>(n, rx, ry, w, f);
+      case KernelShapeId::wendland_quintic: return eval_many_xy_as<WendlandQuintic, with_w>(n, rx, ry, w, f);
+      case KernelShapeId::quintic_spline: return eval_many_xy_as<QuinticSpline, with_w>(n, rx, ry, w, f);
     }
   }
   template <class Shape>

@@ -257,11 +257,10 @@ void gather_neighborhood(const CandidateList& cand, const Kernel& kernel, const 
   std::uint32_t* __restrict pb = nb.b.data();
   double* __restrict prx = nb.rx.data();
   double* __restrict pry = nb.ry.data();
-  double* __restrict pr2 = nb.r2.data();
   const double xa = x[a], ya = y ? y[a] : 0.0;
   std::size_t k = 0;
   // The same operations as pairs_from_candidates then PairList::for_pairs: r_ab = r_a - r_b,
-  // r2 = rx^2 + ry^2, kept when r2 < R^2, kernel values from r2 by eval_many.
+  // r2 = rx^2 + ry^2, kept when r2 < R^2, kernel values from rx, ry by eval_many_xy.
   for (std::size_t c = cand.start[a], end = c + cand.count[a]; c < end; ++c) {
     const std::uint32_t bb = cj[c];
     const double dx = xa - x[bb], dy = y ? ya - y[bb] : 0.0;
@@ -272,11 +271,9 @@ void gather_neighborhood(const CandidateList& cand, const Kernel& kernel, const 
     k += rr < r_max2 ? 1 : 0;  // branch-free compaction: a rejected entry is overwritten
   }
   nb.count = k;
-  // r2 again, for the kept pairs only (the same operations, so the same bits): the loop above is
-  // bound by its stores, one fewer per candidate pays for this vectorised one.
-#pragma omp simd
-  for (std::size_t i = 0; i < k; ++i) pr2[i] = prx[i] * prx[i] + pry[i] * pry[i];
-  kernel.eval_many(k, pr2, nb.w.data(), nb.f.data());
+  // r2 again for the kept pairs inside the vectorised kernel loop (the same operations, so the same
+  // bits): the loop above is bound by its stores, and this costs fewer than storing r2 there.
+  kernel.eval_many_xy(k, prx, pry, nb.with_w ? nb.w.data() : nullptr, nb.f.data());
 }
 
 std::size_t max_candidates(const CandidateList& cand) {

@@ -9,6 +9,7 @@ namespace arksph {
 class ContinuitySzewc final : public ParticleTerm<ContinuitySzewc> {
  public:
   std::string name() const override { return "continuity:szewc19"; }
+  bool reads_kernel_value() const override { return false; }
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum rate;

@@ -12,6 +12,7 @@ namespace arksph {
 class PressureGradientColagrossi final : public ParticleTerm<PressureGradientColagrossi> {
  public:
   std::string name() const override { return "pressure_gradient:colagrossi"; }
+  bool reads_kernel_value() const override { return false; }
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum ax, ay;

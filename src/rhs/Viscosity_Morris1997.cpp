@@ -12,6 +12,7 @@ namespace arksph {
 class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
  public:
   std::string name() const override { return "viscosity:morris"; }
+  bool reads_kernel_value() const override { return false; }
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum ax, ay;

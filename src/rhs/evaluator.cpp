@@ -259,7 +259,12 @@ void RhsEvaluator::force_sweep(std::size_t first, std::size_t last) {
   const double* y = layout_.dim == 2 ? f.y.data() : nullptr;
   const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
   if (scratch_.size() < threads) scratch_.resize(threads);
-  for (Neighborhood& nb : scratch_) nb.reserve(sweep_room_);
+  bool with_w = f.correction != FluidFields::Correction::none;
+  for (std::size_t k = first; k < last; ++k) with_w = with_w || terms_[k]->reads_kernel_value();
+  for (Neighborhood& nb : scratch_) {
+    nb.reserve(sweep_room_);
+    nb.with_w = with_w;
+  }
 #pragma omp parallel
   {
     Neighborhood& nb = scratch_[static_cast<std::size_t>(omp_get_thread_num())];

@@ -25,6 +25,9 @@ class Term {
   // runs consecutive such terms in one sweep over the particles (method.force_sweep).
   virtual bool per_particle() const { return false; }
   virtual void apply_particle(FluidFields&, std::size_t, const Neighborhood&) const {}
+  // Whether apply_particle reads W_ab other than through corrected_gradient (which needs it only
+  // when a kernel correction is on). The sweep skips W when no term needs it.
+  virtual bool reads_kernel_value() const { return true; }
 };
 
 }  // namespace arksph

@@ -248,7 +248,64 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
 
 #include "neighbors/neighborhood.hpp"
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
 namespace arksph {
+
+namespace {
+
+#if defined(__AVX2__)
+// Compaction of four candidates at once: for each 4-bit mask of kept lanes, the permutation that
+// moves the kept lanes to the front, in order (as 32-bit lane indices: 8 for four doubles, 4 for
+// four indices).
+struct CompressTables {
+  alignas(32) std::int32_t doubles[16][8];
+  alignas(16) std::int32_t indices[16][4];
+  constexpr CompressTables() : doubles{}, indices{} {
+    for (int mask = 0; mask < 16; ++mask) {
+      int out = 0;
+      for (int lane = 0; lane < 4; ++lane) {
+        if (!(mask >> lane & 1)) continue;
+        doubles[mask][2 * out] = 2 * lane;
+        doubles[mask][2 * out + 1] = 2 * lane + 1;
+        indices[mask][out] = lane;
+        ++out;
+      }
+    }
+  }
+};
+constexpr CompressTables kCompress;
+
+// Candidates [c, end) of a point at (xa, ya), four at a time, appended from k on; returns the new k
+// and leaves c at the first candidate not done (fewer than four left). Writes up to three entries
+// past the returned k (Neighborhood keeps room for them). The arithmetic is that of the scalar loop.
+std::size_t gather_four_at_a_time(const std::uint32_t* cj, std::size_t& c, std::size_t end, const double* x,
+                                  const double* y, double xa, double ya, double r_max2, std::uint32_t* pb,
+                                  double* prx, double* pry, std::size_t k) {
+  const __m256d vxa = _mm256_set1_pd(xa), vya = _mm256_set1_pd(ya), vr2 = _mm256_set1_pd(r_max2);
+  for (; c + 4 <= end; c += 4) {
+    const __m128i b4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(cj + c));
+    // Scalar loads: the hardware gathers (vgatherdpd) are slower here.
+    const std::uint32_t b0 = cj[c], b1 = cj[c + 1], b2 = cj[c + 2], b3 = cj[c + 3];
+    const __m256d dx = _mm256_sub_pd(vxa, _mm256_set_pd(x[b3], x[b2], x[b1], x[b0]));
+    const __m256d dy = _mm256_sub_pd(vya, _mm256_set_pd(y[b3], y[b2], y[b1], y[b0]));
+    const __m256d rr = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+    const int mask = _mm256_movemask_pd(_mm256_cmp_pd(rr, vr2, _CMP_LT_OQ));
+    const __m256i pd = _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompress.doubles[mask]));
+    const __m128i pi = _mm_load_si128(reinterpret_cast<const __m128i*>(kCompress.indices[mask]));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(pb + k),
+                     _mm_castps_si128(_mm_permutevar_ps(_mm_castsi128_ps(b4), pi)));
+    _mm256_storeu_pd(prx + k, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(dx), pd)));
+    _mm256_storeu_pd(pry + k, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(dy), pd)));
+    k += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+  }
+  return k;
+}
+#endif
+
+}  // namespace
 
 void gather_neighborhood(const CandidateList& cand, const Kernel& kernel, const double* x, const double* y,
                          std::size_t a, Neighborhood& nb) {
@@ -259,9 +316,14 @@ void gather_neighborhood(const CandidateList& cand, const Kernel& kernel, const 
   double* __restrict pry = nb.ry.data();
   const double xa = x[a], ya = y ? y[a] : 0.0;
   std::size_t k = 0;
+  std::size_t c = cand.start[a];
+  const std::size_t end = c + cand.count[a];
+#if defined(__AVX2__)
+  if (y) k = gather_four_at_a_time(cj, c, end, x, y, xa, ya, r_max2, pb, prx, pry, k);
+#endif
   // The same operations as pairs_from_candidates then PairList::for_pairs: r_ab = r_a - r_b,
   // r2 = rx^2 + ry^2, kept when r2 < R^2, kernel values from rx, ry by eval_many_xy.
-  for (std::size_t c = cand.start[a], end = c + cand.count[a]; c < end; ++c) {
+  for (; c < end; ++c) {
     const std::uint32_t bb = cj[c];
     const double dx = xa - x[bb], dy = y ? ya - y[bb] : 0.0;
     const double rr = dx * dx + dy * dy;

@@ -21,9 +21,9 @@ class ViscosityCleary final : public ParticleTerm<ViscosityCleary> {
     const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
     double ax = 0.0, ay = 0.0;
     const double ua = f.u[a], va = f.dim == 2 ? f.v[a] : 0.0;
-    const double mu_a = f.rho[a] * f.nu[a];
+    const double mu_a = f.mu[a];
     nb.for_pairs([&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
-      const double mu_b = f.rho[b] * f.nu[b];
+      const double mu_b = f.mu[b];
       const double mu_sum = mu_a + mu_b;
       if (mu_sum <= 0) return;
       const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);

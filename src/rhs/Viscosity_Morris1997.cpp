@@ -1,6 +1,6 @@
 // Viscosity of Morris et al. 1997, model E of Basa et al. 2008 (eq. 35):
 //   (1/rho div tau)_a = sum_b m_b (mu_a + mu_b) / (rho_a rho_b) (r_ab . grad_a W_ab) / r_ab^2 u_ab,
-// with mu = rho nu. Since grad_a W_ab = F r_ab, (r_ab . grad_a W_ab) / r_ab^2 = F.
+// with mu = rho nu (f.mu). Since grad_a W_ab = F r_ab, (r_ab . grad_a W_ab) / r_ab^2 = F.
 // With a kernel correction (Basa §4) grad_a W_ab is replaced by the corrected gradient G_ab, so F
 // becomes (r_ab . G_ab) / r_ab^2.
 #include "rhs/KernelCorrection_Basa2008.hpp"
@@ -16,7 +16,7 @@ class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum ax, ay;
-    const double mu_a = f.rho[a] * f.nu[a], inv_rho_a = 1.0 / f.rho[a];
+    const double mu_a = f.mu[a], inv_rho_a = 1.0 / f.rho[a];
     const double ua = f.u[a], va = two_d<C>(f) ? f.v[a] : 0.0;
     const bool corrected = !C::plain && f.correction != FluidFields::Correction::none;
     nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double r2, double w, double F) {
@@ -25,7 +25,7 @@ class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
         corrected_gradient(f, a, rx, ry, w, F, gx, gy);
         F = (rx * gx + ry * gy) / r2;
       }
-      const double mu_sum = mu_a + f.rho[b] * f.nu[b];
+      const double mu_sum = mu_a + f.mu[b];
       const double coeff = f.vol[b] * mu_sum * inv_rho_a * F;  // m_b / (rho_a rho_b) = V_b / rho_a
       ax[lane] += coeff * (ua - f.u[b]);
       if (two_d<C>(f)) ay[lane] += coeff * (va - f.v[b]);

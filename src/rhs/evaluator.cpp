@@ -327,8 +327,12 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
       done = term->stage();
       if (done == Term::Stage::force) {
         f.vol.resize(f.n_all);
+        f.mu.resize(f.n_all);
 #pragma omp parallel for schedule(static) if (f.n_all > kCheapLoopParallelMin)
-        for (std::size_t i = 0; i < f.n_all; ++i) f.vol[i] = f.m[i] / f.rho[i];
+        for (std::size_t i = 0; i < f.n_all; ++i) {
+          f.vol[i] = f.m[i] / f.rho[i];
+          f.mu[i] = f.rho[i] * f.nu[i];
+        }
       }
     }
     if (implicit_viscosity_ && viscous_[k]) {  // IMEX: f_I, below

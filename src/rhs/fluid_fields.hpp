@@ -24,6 +24,7 @@ struct FluidFields {
   std::vector<double> rho, p, m;
   std::vector<double> vol;     // V = m / rho, refreshed on entering the force stage (no division per pair)
   std::vector<double> nu;      // kinematic viscosity per point
+  std::vector<double> mu;      // dynamic viscosity rho nu, refreshed with vol (one load per pair, not two)
   std::vector<std::uint32_t> src;  // the real particle each point stands for (itself when real)
   std::vector<double> flip_x, flip_y;  // +1, or -1 where a point is a reflection of its source
   // A wall image (mirrored across a wall, possibly also shifted periodically), as opposed to a real

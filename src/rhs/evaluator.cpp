@@ -116,7 +116,6 @@ void RhsEvaluator::load_state(double t, const double* y) {
     for (std::size_t a = 0; a < n; ++a)
       if (v[a] < lo || v[a] >= lo + len) v[a] = lo + (v[a] - lo) - len * std::floor((v[a] - lo) / len);
   }
-  f.m.assign(particles_.mass.begin(), particles_.mass.end());
   if (layout_.has_density)
     f.rho.assign(y + layout_.rho(), y + layout_.rho() + n);
   else
@@ -140,7 +139,7 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   auto room = [&](auto& field) {
     if (field.capacity() < f.n_all) field.reserve(f.n_all + f.n_all / 64);
   };
-  for (auto* field : {&f.x, &f.u, &f.ud, &f.m, &f.rho, &f.p, &f.nu, &f.vol, &f.flip_x}) room(*field);
+  for (auto* field : {&f.x, &f.u, &f.ud, &f.m, &f.rho, &f.p, &f.nu, &f.vol, &f.mu, &f.flip_x}) room(*field);
   if (two_d)
     for (auto* field : {&f.y, &f.v, &f.vd, &f.flip_y}) room(*field);
   room(f.src);
@@ -152,19 +151,23 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   f.vd.resize(two_d ? f.n_all : 0);
   std::copy(f.u.begin(), f.u.begin() + n, f.ud.begin());
   if (two_d) std::copy(f.v.begin(), f.v.begin() + n, f.vd.begin());
-  f.m.resize(f.n_all);
-  f.src.resize(f.n_all);
-  for (std::size_t a = 0; a < n; ++a) f.src[a] = static_cast<std::uint32_t>(a);
-  for (std::size_t g = 0; g < ng; ++g) f.src[n + g] = ghosts_.source[g];
-  f.flip_x.assign(f.n_all, 1.0);
-  f.flip_y.assign(two_d ? f.n_all : 0, 1.0);
-  for (std::size_t g = 0; g < ng; ++g) {
-    f.flip_x[n + g] = ghosts_.place[g][0];
-    if (two_d) f.flip_y[n + g] = ghosts_.place[g][1];
+  // Constant between rebuilds (the ghosts keep their sources and places): set only at a rebuild.
+  if (rebuild) {
+    f.m.assign(particles_.mass.begin(), particles_.mass.end());
+    f.m.resize(f.n_all);
+    for (std::size_t g = 0; g < ng; ++g) f.m[n + g] = f.m[ghosts_.source[g]];
+    f.src.resize(f.n_all);
+    for (std::size_t a = 0; a < n; ++a) f.src[a] = static_cast<std::uint32_t>(a);
+    for (std::size_t g = 0; g < ng; ++g) f.src[n + g] = ghosts_.source[g];
+    f.flip_x.assign(f.n_all, 1.0);
+    f.flip_y.assign(two_d ? f.n_all : 0, 1.0);
+    for (std::size_t g = 0; g < ng; ++g) {
+      f.flip_x[n + g] = ghosts_.place[g][0];
+      if (two_d) f.flip_y[n + g] = ghosts_.place[g][1];
+    }
+    f.nu.assign(f.n_all, nu_);
   }
-  for (std::size_t g = 0; g < ng; ++g) f.m[n + g] = f.m[ghosts_.source[g]];
   ghost_velocities();
-  f.nu.assign(f.n_all, nu_);
 }
 
 // Ghost velocities from their sources' (affine maps), then the wall-velocity extrapolations.

@@ -12,7 +12,8 @@ namespace arksph::bench {
 
 Scene periodic_box(int n, const std::string& scheme, const std::vector<std::string>& sets = {});
 
-// A model with its state at t = 0 and one right-hand-side evaluation done (pairs, ghosts, fields).
+// A model with its state at t = 0, its particles sorted by cell as a run does at t = 0, and one
+// right-hand-side evaluation done (pairs, ghosts, fields).
 struct Prepared {
   Scene scene;
   Model model;

@@ -58,7 +58,7 @@ class ViscosityDirect final : public ParticleTerm<ViscosityDirect> {
       return (s.s2[ij] * o - s.s1[j] * one.s1[i] - s.s1[i] * one.s1[j] - s.s0 * one.s2[ij]) / (o * o) +
              2.0 * s.s0 * one.s1[i] * one.s1[j] / (o * o * o);
     };
-    const double nu = f.nu[a];
+    const double nu = f.nu;
     if (!two_d) {
       f.dudt[a] += nu * second(su, 0, 0);
       return;

@@ -68,7 +68,7 @@ class ViscosityTwoPass final : public Term {
     // Stress over rho^2 at every point (eq. 4).
     txx_.resize(n_all), txy_.resize(n_all), tyy_.resize(n_all);
     for (std::size_t i = 0; i < n_all; ++i) {
-      const double mu = f.rho[i] * f.nu[i], lambda = 2.0 / 3.0 * mu, div = dux_[i] + dvy_[i];
+      const double mu = f.rho[i] * f.nu, lambda = 2.0 / 3.0 * mu, div = dux_[i] + dvy_[i];
       const double s = 1.0 / (f.rho[i] * f.rho[i]);
       txx_[i] = s * (2.0 * mu * dux_[i] - lambda * div);
       txy_[i] = s * mu * (duy_[i] + dvx_[i]);

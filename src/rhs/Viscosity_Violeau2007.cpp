@@ -28,7 +28,8 @@ class ViscosityVioleau final : public ParticleTerm<ViscosityVioleau> {
       const double u_dot_r = (ua - f.u[b]) * rx + (f.dim == 2 ? (va - f.v[b]) * ry : 0.0);
       double gx, gy;
       corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-      const double coeff = f.m[b] * 8.0 / (f.rho[a] + f.rho[b]) * (f.nu[a] + f.nu[b]) * u_dot_r / (r2 + eta2);
+      const double nu_sum = 2.0 * f.nu;  // nu_a + nu_b, one fluid
+      const double coeff = f.m[b] * 8.0 / (f.rho[a] + f.rho[b]) * nu_sum * u_dot_r / (r2 + eta2);
       ax += coeff * gx;
       ay += coeff * gy;
     });

@@ -26,7 +26,6 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       kernel_(std::move(kernel)),
       terms_(std::move(terms)),
       ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
-      nu_(scene.viscosity),
       lean_pairs_(scene.neighbor_storage == "candidates"),
       // The projection schemes store the pair list for their Poisson step anyway: their few force
       // terms walk it rather than gather the same neighbours and kernel values a second time.
@@ -57,6 +56,7 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   fields_.dim = particles.dim;
   fields_.n_real = particles.n;
   fields_.kernel = &kernel_;
+  fields_.nu = scene.viscosity;
   fields_.rho0 = particles.rho0;
   const std::size_t n = particles.n;
   fields_.dudt.assign(n, 0.0);
@@ -139,7 +139,7 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
   auto room = [&](auto& field) {
     if (field.capacity() < f.n_all) field.reserve(f.n_all + f.n_all / 64);
   };
-  for (auto* field : {&f.x, &f.u, &f.ud, &f.m, &f.rho, &f.p, &f.nu, &f.vol, &f.mu, &f.flip_x}) room(*field);
+  for (auto* field : {&f.x, &f.u, &f.ud, &f.m, &f.rho, &f.p, &f.vol, &f.mu, &f.flip_x}) room(*field);
   if (two_d)
     for (auto* field : {&f.y, &f.v, &f.vd, &f.flip_y}) room(*field);
   room(f.src);
@@ -165,7 +165,6 @@ void RhsEvaluator::refresh_ghosts(bool rebuild) {
       f.flip_x[n + g] = ghosts_.place[g][0];
       if (two_d) f.flip_y[n + g] = ghosts_.place[g][1];
     }
-    f.nu.assign(f.n_all, nu_);
   }
   ghost_velocities();
 }
@@ -334,7 +333,7 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
 #pragma omp parallel for schedule(static) if (f.n_all > kCheapLoopParallelMin)
         for (std::size_t i = 0; i < f.n_all; ++i) {
           f.vol[i] = f.m[i] / f.rho[i];
-          f.mu[i] = f.rho[i] * f.nu[i];
+          f.mu[i] = f.rho[i] * f.nu;
         }
       }
     }

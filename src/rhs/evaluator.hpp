@@ -84,7 +84,6 @@ class RhsEvaluator {
   double skin_ = 0;
   long rebuilds_ = 0;
   FluidFields fields_;
-  double nu_;
   bool lean_pairs_;  // method.neighbor_storage = "candidates": no per-pair kernel values stored
   bool sweep_;       // method.force_sweep (wcsph): per-particle terms share one gathered neighbourhood
   bool pairs_every_eval_ = true;  // some term or the scheme reads f.pairs: build them at every f

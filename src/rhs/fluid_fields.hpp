@@ -23,7 +23,7 @@ struct FluidFields {
   std::vector<double> ud, vd;  // velocity for the divergence (free-slip images near walls, Szewc §6)
   std::vector<double> rho, p, m;
   std::vector<double> vol;     // V = m / rho, refreshed on entering the force stage (no division per pair)
-  std::vector<double> nu;      // kinematic viscosity per point
+  double nu = 0;               // kinematic viscosity (one value for all points)
   std::vector<double> mu;      // dynamic viscosity rho nu, refreshed with vol (one load per pair, not two)
   std::vector<std::uint32_t> src;  // the real particle each point stands for (itself when real)
   std::vector<double> flip_x, flip_y;  // +1, or -1 where a point is a reflection of its source

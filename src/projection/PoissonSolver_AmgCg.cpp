@@ -68,7 +68,7 @@ class PoissonSolverAmgCg final : public PoissonSolver {
     double* q = q_.data();
     csr_residual(A, b, x, r);
     double nb2 = 0, rr = 0;
-#pragma omp parallel for schedule(static) reduction(+ : nb2, rr)
+#pragma omp parallel for schedule(static) reduction(+ : nb2, rr) if (n > kSolverParallelMin)
     for (int i = 0; i < n; ++i) {
       nb2 += b[i] * b[i];
       rr += r[i] * r[i];
@@ -85,20 +85,20 @@ class PoissonSolverAmgCg final : public PoissonSolver {
     while (rr > target2 && it < max_it) {
       amg_.vcycle(r, z);
       double rz_new = 0;
-#pragma omp parallel for schedule(static) reduction(+ : rz_new)
+#pragma omp parallel for schedule(static) reduction(+ : rz_new) if (n > kSolverParallelMin)
       for (int i = 0; i < n; ++i) rz_new += r[i] * z[i];
       const double beta = it == 0 ? 0.0 : rz_new / rz;
       rz = rz_new;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kSolverParallelMin)
       for (int i = 0; i < n; ++i) d[i] = z[i] + beta * d[i];
       csr_multiply(A, d, q);
       double dq = 0;
-#pragma omp parallel for schedule(static) reduction(+ : dq)
+#pragma omp parallel for schedule(static) reduction(+ : dq) if (n > kSolverParallelMin)
       for (int i = 0; i < n; ++i) dq += d[i] * q[i];
       if (!(dq > 0)) throw NumericalFailure("cg_amg: matrix or preconditioner not positive definite");
       const double alpha = rz / dq;
       rr = 0;
-#pragma omp parallel for schedule(static) reduction(+ : rr)
+#pragma omp parallel for schedule(static) reduction(+ : rr) if (n > kSolverParallelMin)
       for (int i = 0; i < n; ++i) {
         x[i] += alpha * d[i];
         r[i] -= alpha * q[i];
@@ -109,7 +109,7 @@ class PoissonSolverAmgCg final : public PoissonSolver {
     // True residual (the recursive one drifts by round-off).
     csr_residual(A, b, x, q);
     double res = 0;
-#pragma omp parallel for schedule(static) reduction(+ : res)
+#pragma omp parallel for schedule(static) reduction(+ : res) if (n > kSolverParallelMin)
     for (int i = 0; i < n; ++i) res += q[i] * q[i];
     rel_residual = std::sqrt(res / nb2);
     return it;

@@ -10,7 +10,7 @@
 namespace arksph {
 
 namespace {
-constexpr int kParallelMin = 20000;  // rows below which loops stay serial (thread wake-up dominates)
+constexpr int kParallelMin = kSolverParallelMin;
 
 // C = A B (A: A.n rows, B: ncols columns), columns unsorted within a row. Two passes (count, fill),
 // rows in parallel, one marker array per thread.

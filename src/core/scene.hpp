@@ -72,7 +72,7 @@ struct Scene {
   std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_divergence = "cummins_rudman";  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
   std::string ppe_pressure_level = "zero_mean";  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)
-  bool force_sweep = true;  // wcsph: the per-particle force terms share one neighbourhood gather
+  bool force_sweep = true;  // the per-particle force terms share one neighbourhood gather
   std::string neighbor_storage = "pairs";        // "pairs" (W, F stored) | "candidates" (kernel on the fly)
   double ppe_pressure_offset = 0.0;              // isph: constant added to P after the level (background pressure)
   std::string ppe_solver = "auto";     // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (README)

@@ -66,7 +66,7 @@ ppe_divergence = "cummins_rudman"  # isph: PPE source, "cummins_rudman" (C&R eq.
 ppe_pressure_level = "zero_mean"  # isph: free level of P, "zero_mean" | "zero_min" (P >= 0, so eq. 11 never attracts)
 ppe_pressure_offset = 0.0        # isph: constant added to P after the level (a background pressure)
 neighbor_storage = "pairs"       # "pairs": kernel values stored per pair (fast) | "candidates": recomputed by every term (less memory)
-force_sweep = true               # wcsph: force terms share one neighbour gather per particle (no pair storage); same results
+force_sweep = true               # force terms share one neighbour gather per particle (no pair storage); same results
 ppe_solver = "auto"            # isph: Poisson solver, "klu" (direct) | "cg" (Jacobi CG) | "cg_ic" (incomplete-Cholesky CG) | "cg_amg" (CG + aggregation AMG) | "auto" (KLU up to 400 particles, else cg_amg); CG warm-started
 ppe_tolerance = 1e-10          # isph with cg: relative residual
 gpps_spacing = 0              # isph-gpps: cell size of the auxiliary Poisson grid (Szewc §4.2); 0: fluid.spacing; must divide the box

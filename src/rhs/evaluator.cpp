@@ -27,9 +27,11 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
       terms_(std::move(terms)),
       ghost_builder_(scene, ghost_depth(scene, kernel_.radius())),
       lean_pairs_(scene.neighbor_storage == "candidates"),
-      // The projection schemes store the pair list for their Poisson step anyway: their few force
-      // terms walk it rather than gather the same neighbours and kernel values a second time.
-      sweep_(scene.force_sweep && scene.scheme == "wcsph") {
+      sweep_(scene.force_sweep),
+      // The projection walks the pairs of its field refresh (at r*) several times (divergence,
+      // assembly, gradient): stored, not lean. Its force terms' f(t, y) is at other positions, so
+      // they run in the sweep like WCSPH's.
+      stored_pairs_on_refresh_(scene.scheme != "wcsph") {
   // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
   skin_ = 0.15 * kernel_.radius();
   if (scene.wall_velocity == "linear" && scene.dimension == 2)
@@ -302,9 +304,9 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   // Pairs for the terms outside the sweep, for IMEX's viscous probes and for whoever reads fields()
   // after a field refresh (ydot null: diagnostics, the projection); otherwise none are stored.
   // When only a refresh needs them, the lean form (kernel evaluated on each visit, same values):
-  // the diagnostics walk them once, and no per-pair arrays are ever allocated.
+  // the diagnostics walk them once, and no per-pair arrays are ever allocated (WCSPH).
   if (pairs_every_eval_ || implicit_viscosity_ || !ydot) {
-    if (lean_pairs_ || (!pairs_every_eval_ && !implicit_viscosity_))
+    if (lean_pairs_ || (!pairs_every_eval_ && !implicit_viscosity_ && !stored_pairs_on_refresh_))
       lean_pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);
     else
       pairs_from_candidates(candidates_, kernel_, f.x.data(), two_d ? f.y.data() : nullptr, f.pairs);

@@ -85,7 +85,8 @@ class RhsEvaluator {
   long rebuilds_ = 0;
   FluidFields fields_;
   bool lean_pairs_;  // method.neighbor_storage = "candidates": no per-pair kernel values stored
-  bool sweep_;       // method.force_sweep (wcsph): per-particle terms share one gathered neighbourhood
+  bool sweep_;       // method.force_sweep: per-particle terms share one gathered neighbourhood
+  bool stored_pairs_on_refresh_;  // a field refresh stores the pair list (the projection schemes)
   bool pairs_every_eval_ = true;  // some term or the scheme reads f.pairs: build them at every f
   std::vector<Neighborhood> scratch_;
   std::size_t sweep_room_ = 0;  // the largest candidate row since the last rebuild  // force sweep: one neighbourhood buffer per thread

@@ -18,17 +18,19 @@ class PressureGradientColagrossi final : public ParticleTerm<PressureGradientCol
     SplitSum ax, ay;
     const double p_ref = C::plain || f.p_avg.empty() ? 0.0 : f.p_avg[a];
     const double pa = f.p[a] - p_ref, inv_rhoa = 1.0 / f.rho[a];
+    // m_b / (rho_a rho_b) = V_b / rho_a; 1 / rho_a is applied to the sums (one product per
+    // particle, not per pair: the pair loop is bound by its multiplications).
     nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double, double w, double F) {
       double gx, gy;
       corrected_gradient(C{}, f, a, rx, ry, w, F, gx, gy);
-      // m_b / (rho_a rho_b) = V_b / rho_a; without pressure reduction p_ref = 0, and x - 0 = x
+      // without pressure reduction p_ref = 0, and x - 0 = x
       const double p_sum = C::plain ? pa + f.p[b] : pa + f.p[b] - p_ref;
-      const double coeff = f.vol[b] * p_sum * inv_rhoa;
+      const double coeff = f.vol[b] * p_sum;
       ax[lane] -= coeff * gx;
       ay[lane] -= coeff * gy;
     });
-    f.dudt[a] += ax.total();
-    if (two_d<C>(f)) f.dvdt[a] += ay.total();
+    f.dudt[a] += ax.total() * inv_rhoa;
+    if (two_d<C>(f)) f.dvdt[a] += ay.total() * inv_rhoa;
   }
 };
 

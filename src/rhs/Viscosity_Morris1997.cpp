@@ -26,12 +26,14 @@ class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
         F = (rx * gx + ry * gy) / r2;
       }
       const double mu_sum = mu_a + f.mu[b];
-      const double coeff = f.vol[b] * mu_sum * inv_rho_a * F;  // m_b / (rho_a rho_b) = V_b / rho_a
+      // m_b / (rho_a rho_b) = V_b / rho_a, with 1 / rho_a applied to the sums (one product per
+      // particle, not per pair: the pair loop is bound by its multiplications)
+      const double coeff = f.vol[b] * mu_sum * F;
       ax[lane] += coeff * (ua - f.u[b]);
       if (two_d<C>(f)) ay[lane] += coeff * (va - f.v[b]);
     });
-    f.dudt[a] += ax.total();
-    if (two_d<C>(f)) f.dvdt[a] += ay.total();
+    f.dudt[a] += ax.total() * inv_rho_a;
+    if (two_d<C>(f)) f.dvdt[a] += ay.total() * inv_rho_a;
   }
 };
 

@@ -62,9 +62,9 @@ class RhsEvaluator {
   void viscous_acceleration(const double* u, const double* v, double* au, double* av);
 
  private:
-  void load_state(double t, const double* y);
+  double load_state(double t, const double* y);
+  double store_derivatives(const double* y, double* ydot) const;
   void refresh_ghosts(bool rebuild);
-  bool needs_rebuild() const;
   void copy_to_ghosts(std::vector<double>& field);
   void ghost_velocities();
   void apply_viscous_terms(std::vector<double>& au, std::vector<double>& av);

@@ -129,11 +129,12 @@ struct PairList {
       body(b, rx, ry, rx * rx + ry * ry, w[k], f[k]);
     }
   }
-  // body(lane, b, rx, ry, r2, W_ab, F_ab) with lane = Lane<k % 2> for a's k-th neighbour (SplitSum).
-  template <class Body>
-  void for_pairs_split(std::size_t a, Body&& body) const {
+  // body(lane, b, rx, ry, r2, W_ab, F_ab) with lane = Lane<k % 2> for a's k-th neighbour (SplitSum);
+  // with C::plain two pairs at a time where stored, as Neighborhood::for_pairs_split.
+  template <class C, class Body>
+  void for_pairs_split(C, std::size_t a, Body&& body) const {
     if (a >= n_real) [[unlikely]] pair_list_not_built();
-    if (kernel) {  // lean storage: the pairs are found on the way, so count them
+    if (kernel) {  // lean storage: the pairs are found on the way, so count them (one lane at a time)
       bool odd = false;
       for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
         if (odd)
@@ -145,11 +146,20 @@ struct PairList {
       return;
     }
     const double xa = px[a], ya = py ? py[a] : 0.0;
-    visit_in_lanes(start[a], start[a] + count[a], [&](auto lane, std::size_t k) {
+    auto one = [&](auto lane, std::size_t k) {
       const std::uint32_t b = j[k];
       const double rx = xa - px[b], ry = py ? ya - py[b] : 0.0;
       body(lane, b, rx, ry, rx * rx + ry * ry, w[k], f[k]);
-    });
+    };
+    if constexpr (C::plain) {  // two dimensions
+      visit_two_at_a_time(start[a], start[a] + count[a], [&](std::size_t k) {
+        const std::uint32_t b0 = j[k], b1 = j[k + 1];
+        const Two rx = Two{xa, xa} - Two{px[b0], px[b1]}, ry = Two{ya, ya} - Two{py[b0], py[b1]};
+        body(BothLanes{}, TwoIndices{b0, b1}, rx, ry, rx * rx + ry * ry, load_two(&w[k]), load_two(&f[k]));
+      }, one);
+    } else {
+      visit_in_lanes(start[a], start[a] + count[a], one);
+    }
   }
 };
 

@@ -36,13 +36,23 @@ struct alignas(64) Neighborhood {  // one per thread, on its own cache lines (no
     for (std::size_t k = 0; k < count; ++k) body(pb[k], px[k], py[k], px[k] * px[k] + py[k] * py[k], pw[k], pf[k]);
   }
   // body(lane, b, rx, ry, r2, W_ab, F_ab), lane = Lane<k % 2> for the k-th neighbour (see SplitSum).
-  template <class Body>
-  void for_pairs_split(Body&& body) const {
+  // With C::plain (rhs/particle_term.hpp), pairs come two at a time: body(BothLanes, TwoIndices,
+  // Two rx, ...), and a last odd one alone in lane 0.
+  template <class C, class Body>
+  void for_pairs_split(C, Body&& body) const {
     const std::uint32_t* pb = b.data();
     const double *px = rx.data(), *py = ry.data(), *pw = w.data(), *pf = f.data();
-    visit_in_lanes(0, count, [&](auto lane, std::size_t k) {
+    auto one = [&](auto lane, std::size_t k) {
       body(lane, pb[k], px[k], py[k], px[k] * px[k] + py[k] * py[k], pw[k], pf[k]);
-    });
+    };
+    if constexpr (C::plain) {
+      visit_two_at_a_time(0, count, [&](std::size_t k) {
+        const Two x2 = load_two(px + k), y2 = load_two(py + k);
+        body(BothLanes{}, TwoIndices{pb[k], pb[k + 1]}, x2, y2, x2 * x2 + y2 * y2, load_two(pw + k), load_two(pf + k));
+      }, one);
+    } else {
+      visit_in_lanes(0, count, one);
+    }
   }
 };
 

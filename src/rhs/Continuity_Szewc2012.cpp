@@ -14,10 +14,11 @@ class ContinuitySzewc final : public ParticleTerm<ContinuitySzewc> {
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     SplitSum rate;
     const double ua = f.ud[a], va = two_d<C>(f) ? f.vd[a] : 0.0;
-    nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double u_ab = ua - f.ud[b];
-      const double v_ab = two_d<C>(f) ? va - f.vd[b] : 0.0;
-      rate[lane] += f.m[b] * F * (u_ab * rx + v_ab * ry);  // m_b u_ab . (F r_ab)
+    // One pair (double) or two (Two) at a time: see split_sum.hpp.
+    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
+      const auto u_ab = ua - at(f.ud, b);
+      const auto v_ab = two_d<C>(f) ? va - at(f.vd, b) : decltype(rx){};
+      rate[lane] += at(f.m, b) * F * (u_ab * rx + v_ab * ry);  // m_b u_ab . (F r_ab)
     });
     f.drhodt[a] += rate.total();
   }

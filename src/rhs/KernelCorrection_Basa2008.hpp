@@ -32,18 +32,6 @@ inline void corrected_gradient(const FluidFields& f, std::size_t i, double rx, d
   }
 }
 
-// The same, for a pair loop that knows at compile time whether a correction is on (C::plain: none).
-template <class C>
-inline void corrected_gradient(C, const FluidFields& f, std::size_t i, double rx, double ry, double w, double F,
-                               double& gx, double& gy) {
-  if constexpr (C::plain) {
-    gx = F * rx;
-    gy = F * ry;
-  } else {
-    corrected_gradient(f, i, rx, ry, w, F, gx, gy);
-  }
-}
-
 // Shepard interpolation of a field at real particle a (eq. 21): sum_b V_b F_b W_ab / <1>_a.
 double shepard_interpolate(const FluidFields& f, std::size_t a, const double* field);
 

@@ -20,12 +20,12 @@ class PressureGradientColagrossi final : public ParticleTerm<PressureGradientCol
     const double pa = f.p[a] - p_ref, inv_rhoa = 1.0 / f.rho[a];
     // m_b / (rho_a rho_b) = V_b / rho_a; 1 / rho_a is applied to the sums (one product per
     // particle, not per pair: the pair loop is bound by its multiplications).
-    nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double, double w, double F) {
-      double gx, gy;
-      corrected_gradient(C{}, f, a, rx, ry, w, F, gx, gy);
+    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto w, auto F) {
+      auto gx = F * rx, gy = F * ry;  // grad_a W_ab; one pair (double) or two (Two): split_sum.hpp
+      if constexpr (!C::plain) corrected_gradient(f, a, rx, ry, w, F, gx, gy);
       // without pressure reduction p_ref = 0, and x - 0 = x
-      const double p_sum = C::plain ? pa + f.p[b] : pa + f.p[b] - p_ref;
-      const double coeff = f.vol[b] * p_sum;
+      const auto p_sum = C::plain ? pa + at(f.p, b) : pa + at(f.p, b) - p_ref;
+      const auto coeff = at(f.vol, b) * p_sum;
       ax[lane] -= coeff * gx;
       ay[lane] -= coeff * gy;
     });

@@ -19,18 +19,21 @@ class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
     const double mu_a = f.mu[a], inv_rho_a = 1.0 / f.rho[a];
     const double ua = f.u[a], va = two_d<C>(f) ? f.v[a] : 0.0;
     const bool corrected = !C::plain && f.correction != FluidFields::Correction::none;
-    nb.for_pairs_split([&](auto lane, std::uint32_t b, double rx, double ry, double r2, double w, double F) {
-      if (corrected) {
-        double gx, gy;
-        corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-        F = (rx * gx + ry * gy) / r2;
+    // One pair (double) or two (Two) at a time: see split_sum.hpp.
+    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto r2, auto w, auto F) {
+      if constexpr (!C::plain) {
+        if (corrected) {
+          double gx, gy;
+          corrected_gradient(f, a, rx, ry, w, F, gx, gy);
+          F = (rx * gx + ry * gy) / r2;
+        }
       }
-      const double mu_sum = mu_a + f.mu[b];
+      const auto mu_sum = mu_a + at(f.mu, b);
       // m_b / (rho_a rho_b) = V_b / rho_a, with 1 / rho_a applied to the sums (one product per
       // particle, not per pair: the pair loop is bound by its multiplications)
-      const double coeff = f.vol[b] * mu_sum * F;
-      ax[lane] += coeff * (ua - f.u[b]);
-      if (two_d<C>(f)) ay[lane] += coeff * (va - f.v[b]);
+      const auto coeff = at(f.vol, b) * mu_sum * F;
+      ax[lane] += coeff * (ua - at(f.u, b));
+      if (two_d<C>(f)) ay[lane] += coeff * (va - at(f.v, b));
     });
     f.dudt[a] += ax.total() * inv_rho_a;
     if (two_d<C>(f)) f.dvdt[a] += ay.total() * inv_rho_a;

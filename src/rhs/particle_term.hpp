@@ -18,9 +18,9 @@ struct PairsOf {
     pairs.for_pairs(a, static_cast<Body&&>(body));
   }
   // The lanes of Neighborhood::for_pairs_split, alternating in the same pair order.
-  template <class Body>
-  void for_pairs_split(Body&& body) const {
-    pairs.for_pairs_split(a, static_cast<Body&&>(body));
+  template <class C, class Body>
+  void for_pairs_split(C c, Body&& body) const {
+    pairs.for_pairs_split(c, a, static_cast<Body&&>(body));
   }
 };
 

@@ -1,8 +1,11 @@
 // Base of the force terms that are sums over one particle's neighbours, written once as
 //   template <class Neighbors> void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const
-// where nb.for_pairs(body) visits a's neighbours. The term then runs either over the stored pair list
-// (apply: one parallel loop of its own) or inside the evaluator's force sweep from a gathered
-// Neighborhood (apply_particle), with the same arithmetic in the same order.
+// where nb.for_pairs(body) visits a's neighbours (or, with the pair configuration C below,
+//   template <class C, class Neighbors> void particle(...)
+// with nb.for_pairs_split(C{}, body): split sums, two pairs at a time for PlainPairs; see
+// neighbors/split_sum.hpp). The term then runs either over the stored pair list (apply: one parallel
+// loop of its own) or inside the evaluator's force sweep from a gathered Neighborhood
+// (apply_particle), with the same arithmetic in the same order.
 #pragma once
 #include "neighbors/neighborhood.hpp"
 #include "rhs/term.hpp"

@@ -279,8 +279,10 @@ struct CompressTables {
 constexpr CompressTables kCompress;
 
 // Candidates [c, end) of a point at (xa, ya), four at a time, appended from k on; returns the new k
-// and leaves c at the first candidate not done (fewer than four left). Writes up to three entries
-// past the returned k (Neighborhood keeps room for them). The arithmetic is that of the scalar loop.
+// and leaves c at the first candidate not done (fewer than four left). Each step stores four
+// entries from k on, kept ones first; since k never exceeds the candidates done, the highest index
+// stored is below the row's candidate count, the room a Neighborhood has. The arithmetic is that of
+// the scalar loop.
 std::size_t gather_four_at_a_time(const std::uint32_t* cj, std::size_t& c, std::size_t end, const double* x,
                                   const double* y, double xa, double ya, double r_max2, std::uint32_t* pb,
                                   double* prx, double* pry, std::size_t k) {
@@ -334,7 +336,7 @@ void gather_neighborhood(const CandidateList& cand, const Kernel& kernel, const 
   }
   nb.count = k;
   // r2 again for the kept pairs inside the vectorised kernel loop (the same operations, so the same
-  // bits): the loop above is bound by its stores, and this costs fewer than storing r2 there.
+  // bits) rather than stored by the loops above.
   kernel.eval_many_xy(k, prx, pry, nb.with_w ? nb.w.data() : nullptr, nb.f.data());
 }
 

@@ -22,7 +22,6 @@ struct alignas(64) Neighborhood {  // one per thread, on its own cache lines (no
 
   // Room for cap neighbours; only grows (no allocation once sized for the largest candidate row).
   void reserve(std::size_t cap) {
-    cap += 3;  // the four-wide gather writes up to three entries past the last one kept
     if (b.size() >= cap) return;
     for (auto* v : {&rx, &ry, &f}) v->resize(cap);
     w.assign(cap, std::numeric_limits<double>::quiet_NaN());

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "app/particle_reorder.hpp"
+#include "run/particle_reorder.hpp"
 #include "io/scene_reader.hpp"
 
 namespace arksph::bench {

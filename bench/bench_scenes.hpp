@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "core/scene.hpp"
 
 namespace arksph::bench {

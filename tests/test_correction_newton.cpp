@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/correction_newton.hpp"
 #include "projection/projection.hpp"

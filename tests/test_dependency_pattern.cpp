@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "integrate/dependency_pattern.hpp"
 #include "integrate/viscous_jacobian.hpp"
 #include "io/scene_reader.hpp"

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/grid_poisson.hpp"
 #include "projection/grid_transfer.hpp"

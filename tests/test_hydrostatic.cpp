@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "test_support.hpp"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "app/setup.hpp"
-#include "app/simulation.hpp"
+#include "run/setup.hpp"
+#include "run/simulation.hpp"
 #include "core/errors.hpp"
 #include "integrate/viscous_split.hpp"
 #include "io/json_reader.hpp"

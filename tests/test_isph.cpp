@@ -7,7 +7,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/ppe_assembly.hpp"

@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "test_support.hpp"

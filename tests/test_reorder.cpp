@@ -13,7 +13,7 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "app/particle_reorder.hpp"
+#include "run/particle_reorder.hpp"
 #include "io/checkpoint.hpp"
 #include "io/scene_reader.hpp"
 #include "test_support.hpp"

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "core/names.hpp"
-#include "io/expression.hpp"
+#include "io/names.hpp"
+#include "core/expression.hpp"
 #include "io/scene_reader.hpp"
 
 using namespace arksph;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "rhs/terms.hpp"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "diagnostics/phase_interface.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"

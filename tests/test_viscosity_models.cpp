@@ -8,7 +8,7 @@
 #include <random>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "io/scene_reader.hpp"
 #include "rhs/terms.hpp"
 #include "test_support.hpp"

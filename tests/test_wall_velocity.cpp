@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "io/scene_reader.hpp"
 
 using namespace arksph;

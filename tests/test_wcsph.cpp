@@ -6,7 +6,7 @@
 #include <random>
 #include <sstream>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "rhs/terms.hpp"

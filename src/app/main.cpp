@@ -1,4 +1,4 @@
-// arksph command line: run, list, help. Exit codes (INTERFACE.md): 0 ok, 2 bad input, 3 numerical failure.
+// arksph command line: run, list, help. Exit codes: 0 ok, 2 bad input, 3 numerical failure.
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -6,15 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "app/omp_wait_policy.hpp"
-#include "app/interrupt.hpp"
-#include "app/simulation.hpp"
+#include "run/omp_wait_policy.hpp"
+#include "run/interrupt.hpp"
+#include "run/simulation.hpp"
 #include "app/study_commands.hpp"
-#include "integrate/imex_integrator.hpp"
 #include "core/errors.hpp"
-#include "core/names.hpp"
-#include "integrate/erk_integrator.hpp"
 #include "io/checkpoint.hpp"
+#include "io/scene_catalog.hpp"
 #include "io/scene_reader.hpp"
 
 namespace {
@@ -36,6 +34,7 @@ const char* kUsage =
     "  arksph study work-precision STUDY.toml           error against wall time, schemes x resolutions\n"
     "  arksph list                 registered kernels, schemes, viscosity models, ARKODE tables, ...\n"
     "  arksph default-scene        prints the embedded default scene (a commented template of every key)\n"
+    "  arksph scene-reference      prints the reference of every scene key and registered part (Markdown)\n"
     "  arksph --help | run --help  this text\n"
     "\n"
     "output (in the output directory): particles_NNNNNN.vtp + particles.pvd (ParaView), timeseries.csv,\n"
@@ -53,23 +52,9 @@ std::string toml_quote(const std::string& s) {
 }
 
 int cmd_list() {
-  const char* families[] = {"scheme", "kernel", "viscosity_model", "pressure_gradient", "density_mode",
-                            "kernel_correction", "equation_of_state", "density_correction", "ppe_solver", "erk_table",
-                            "imex_pair"};
-  for (const char* fam : families) {
-    std::printf("%s:\n", fam);
-    for (const auto& n : arksph::registered_names(fam)) {
-      if (std::string(fam) == "erk_table") {
-        std::printf("  %-32s order %d%s%s\n", n.c_str(), arksph::erk_table_order(n),
-                    arksph::erk_table_has_embedding(n) ? ", adaptive or fixed" : ", fixed step only",
-                    arksph::erk_table_has_fsal_bug(n) ? " (SUNDIALS 6.4.1 FSAL bug: worked around, +1 RHS/step)" : "");
-      } else if (std::string(fam) == "imex_pair") {
-        std::printf("  %-32s order %d, %s + %s (time.imex: viscosity implicit)\n", n.c_str(), arksph::imex_pair_order(n),
-                    arksph::imex_pair_dirk_table(n).c_str(), arksph::imex_pair_erk_table(n).c_str());
-      } else {
-        std::printf("  %s\n", n.c_str());
-      }
-    }
+  for (const arksph::FamilyInfo& f : arksph::scene_families()) {
+    std::printf("%s (%s):\n", f.family.c_str(), f.key.c_str());
+    for (const auto& e : f.entries) std::printf("  %-32s %s\n", e.name.c_str(), e.summary.c_str());
   }
   return 0;
 }
@@ -146,6 +131,10 @@ int main(int argc, char** argv) {
     if (cmd == "study") return arksph::cmd_study(argc - 2, argv + 2);
     if (cmd == "default-scene") {
       std::fputs(arksph::default_scene_toml(), stdout);
+      return 0;
+    }
+    if (cmd == "scene-reference") {
+      std::fputs(arksph::scene_reference_markdown().c_str(), stdout);
       return 0;
     }
     std::fprintf(stderr, "arksph: %s: unknown command (try arksph --help)\n", cmd.c_str());

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "io/expression.hpp"
+#include "core/expression.hpp"
 
 namespace arksph {
 

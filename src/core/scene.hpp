@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/parameter.hpp"
+
 namespace arksph {
 
 enum class SideKind { wall, periodic };
@@ -58,7 +60,6 @@ struct Scene {
   std::string kernel = "wendland_quintic";
   double h_over_dx = 2.0;
   std::string viscosity_model = "morris";
-  double cleary_xi = 4.96333;          // Basa et al. 2008 eq. 34 (model D) calibration constant
   std::string kernel_correction = "none";  // Basa et al. 2008 §4: "none" | "shepard" (eqs. 21-23) | "bonet_lok" (eqs. 24-26)
   bool pressure_reduction = false;     // Basa et al. 2008 eq. 20: local average pressure subtracted in the pressure gradient
   double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
@@ -106,6 +107,9 @@ struct Scene {
   int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors
   bool poiseuille = false;  // Basa et al. 2008 eqs. 36-39
   bool interface = false;   // two phases: 0.5 contour of the smoothed phase indicator, tip heights
+
+  // Parameters that parts declare without a member here (core/param_builder.hpp), by dotted key.
+  ParamTable part_params;
 
   // The resolved scene as TOML text (all keys), written into summary.json.
   std::string resolved_toml;

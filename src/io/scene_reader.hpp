@@ -1,5 +1,6 @@
 // Scene reader: TOML scene file (+ --set overrides) -> validated, fully resolved Scene.
-// The file format is INTERFACE.md "Scene file"; every key is commented in default_scene_toml().
+// Every key is declared in the scene catalog (io/scene_catalog.hpp); `arksph default-scene` prints
+// them all with their descriptions.
 //
 // Every problem throws InputError with one line "<source>: <dotted.key>: <reason>" (a TOML syntax
 // error: "<source>:<line>:<col>: syntax error: <description>"; a problem caused by an override names
@@ -34,5 +35,12 @@ const char* default_scene_toml();
 // The scene as TOML text with every key (defaults included), in the order of the file format; reading
 // it back gives the same Scene. This is what Scene::resolved_toml holds.
 std::string scene_to_toml(const Scene& scene);
+
+// The same with each key's description, admissible values and unit as a comment.
+std::string scene_to_commented_toml(const Scene& scene);
+
+// The scene reference in Markdown: every key with type, default, range, unit and description, and
+// every family of named parts (docs/scene-reference.md is this text).
+std::string scene_reference_markdown();
 
 }  // namespace arksph

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "core/errors.hpp"
-#include "core/names.hpp"
-#include "io/expression.hpp"
+#include "io/names.hpp"
+#include "core/expression.hpp"
 
 namespace arksph::scene_schema {
 

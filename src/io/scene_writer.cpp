@@ -1,9 +1,11 @@
-// Scene -> TOML text with every key, in the order of the file format (Scene::resolved_toml).
-// Numbers are written in their shortest exact form, so the text reads back to the same Scene.
+// Scene -> TOML text with every key of the scene catalog, in its order (Scene::resolved_toml), and
+// the same text with each key's description as a comment (`arksph default-scene`). Numbers are
+// written in their shortest exact form, so the text reads back to the same Scene.
 #include <toml++/toml.h>
 
 #include <sstream>
 
+#include "io/scene_catalog.hpp"
 #include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
 
@@ -35,100 +37,88 @@ std::string strings(const std::vector<std::string>& v) {
   return out + "]";
 }
 
-std::string boolean(bool b) { return b ? "true" : "false"; }
+std::string value_text(const ParamValue& v) {
+  struct Text {
+    std::string operator()(bool b) const { return b ? "true" : "false"; }
+    std::string operator()(long i) const { return std::to_string(i); }
+    std::string operator()(double d) const { return num(d); }
+    std::string operator()(const std::string& s) const { return quote(s); }
+    std::string operator()(const std::vector<double>& v) const { return numbers(v.data(), static_cast<int>(v.size())); }
+    std::string operator()(const std::vector<std::string>& v) const { return strings(v); }
+  };
+  return std::visit(Text{}, v);
+}
+
+// The comment of a key: its description, admissible values and unit.
+std::string comment(const Param& p) {
+  std::string c = p.doc;
+  if (p.type == Param::Type::choice) {
+    std::vector<std::string> values = p.choices;
+    if (!p.family.empty())
+      if (const FamilyInfo* f = find_family(p.family))
+        for (const auto& e : f->entries) values.push_back(e.name);
+    std::string list;
+    for (const auto& v : values) list += (list.empty() ? "" : " | ") + quote(v);
+    if (values.size() <= 8) c += ": " + list;
+    else c += " (arksph list: " + p.family + ")";
+  }
+  const std::string range = p.range.describe();
+  if (!range.empty() && p.type != Param::Type::choice) c += "; " + range;
+  if (!p.unit.empty()) c += " [" + p.unit + "]";
+  return c;
+}
+
+const char* const kSideNames[4] = {"left", "right", "bottom", "top"};
+
+std::string side_text(const Scene& s, int i) {
+  const SideSpec& side = s.sides[i];
+  if (side.kind == SideKind::periodic) return "{ kind = " + quote("periodic") + " }";
+  return "{ kind = " + quote("wall") + ", velocity = " + numbers(side.velocity.data(), s.dimension) +
+         ", slip = " + quote(side.slip == SlipKind::no_slip ? "no_slip" : "free_slip") + " }";
+}
+
+// The value of a key the reader handles with its own code; empty when it is not written.
+std::string custom_text(const Scene& s, const std::string& key) {
+  if (key == "domain.min") return numbers(s.min.data(), s.dimension);
+  if (key == "domain.max") return numbers(s.max.data(), s.dimension);
+  for (int i = 0; i < 2 * s.dimension; ++i)
+    if (key == std::string("boundary.") + kSideNames[i]) return side_text(s, i);
+  return "";
+}
+
+std::string write(const Scene& s, bool comments) {
+  std::ostringstream o;
+  bool first = true;
+  for (const std::string& table : scene_tables()) {
+    if (table == "phase") {  // [[phase]] blocks, or a commented template without any
+      for (const PhaseSpec& p : s.phases)
+        o << "\n[[phase]]\nwhere = " << quote(p.where) << "\ndensity = " << num(p.density) << "\n";
+      if (comments && s.phases.empty()) {
+        o << "\n# Further phases, by region:\n# [[phase]]\n";
+        for (const auto& k : scene_catalog())
+          if (k.param.key.rfind("phase.", 0) == 0) o << "# " << k.param.key.substr(6) << " = ...   # " << comment(k.param) << "\n";
+      }
+      continue;
+    }
+    o << (first ? "" : "\n") << "[" << table << "]\n";
+    first = false;
+    for (const CatalogKey& k : scene_catalog()) {
+      const Param& p = k.param;
+      if (p.key.compare(0, table.size() + 1, table + ".") != 0) continue;
+      const std::string text = p.custom ? custom_text(s, p.key) : value_text(p.load(s));
+      if (text.empty()) continue;
+      o << p.key.substr(table.size() + 1) << " = " << text;
+      if (comments) o << "   # " << comment(p);
+      o << "\n";
+    }
+  }
+  return o.str();
+}
 
 }  // namespace
 
-std::string scene_to_toml(const Scene& s) {
-  const int dim = s.dimension;
-  std::ostringstream o;
-  o << "[scene]\n"
-    << "name = " << quote(s.name) << "\n"
-    << "dimension = " << dim << "\n\n";
-  o << "[domain]\n"
-    << "min = " << numbers(s.min.data(), dim) << "\n"
-    << "max = " << numbers(s.max.data(), dim) << "\n\n";
-  o << "[boundary]\n";
-  const char* const names[4] = {"left", "right", "bottom", "top"};
-  for (int i = 0; i < 2 * dim; ++i) {
-    const SideSpec& side = s.sides[i];
-    o << names[i] << " = { kind = ";
-    if (side.kind == SideKind::periodic) {
-      o << quote("periodic") << " }\n";
-      continue;
-    }
-    o << quote("wall") << ", velocity = " << numbers(side.velocity.data(), dim)
-      << ", slip = " << quote(side.slip == SlipKind::no_slip ? "no_slip" : "free_slip") << " }\n";
-  }
-  o << "corner_alpha = " << num(s.corner_alpha) << "\n"
-    << "free_slip_divergence = " << boolean(s.free_slip_divergence) << "\n"
-    << "wall_velocity = " << quote(s.wall_velocity) << "\n"
-    << "wall_particles = " << boolean(s.wall_particles) << "\n\n";
-  o << "[fluid]\n"
-    << "spacing = " << num(s.spacing) << "\n"
-    << "density = " << num(s.density) << "\n"
-    << "viscosity = " << num(s.viscosity) << "\n"
-    << "body_force = " << strings(s.body_force) << "\n"
-    << "shuffle_initial_order = " << boolean(s.shuffle_initial_order) << "\n\n";
-  o << "[initial]\n"
-    << "velocity = " << strings(s.initial_velocity) << "\n"
-    << "offset = " << strings(s.initial_offset) << "\n\n";
-  for (const PhaseSpec& p : s.phases)
-    o << "[[phase]]\n"
-      << "where = " << quote(p.where) << "\n"
-      << "density = " << num(p.density) << "\n\n";
-  o << "[method]\n"
-    << "scheme = " << quote(s.scheme) << "\n"
-    << "kernel = " << quote(s.kernel) << "\n"
-    << "h_over_dx = " << num(s.h_over_dx) << "\n"
-    << "viscosity_model = " << quote(s.viscosity_model) << "\n"
-    << "cleary_xi = " << num(s.cleary_xi) << "\n"
-    << "kernel_correction = " << quote(s.kernel_correction) << "\n"
-    << "pressure_reduction = " << boolean(s.pressure_reduction) << "\n"
-    << "equation_of_state = " << quote(s.equation_of_state) << "\n"
-    << "gas_gamma = " << num(s.gas_gamma) << "\n"
-    << "sound_speed = " << num(s.sound_speed) << "\n"
-    << "tait_gamma = " << num(s.tait_gamma) << "\n"
-    << "background_pressure = " << num(s.background_pressure) << "\n"
-    << "density_mode = " << quote(s.density_mode) << "\n"
-    << "pressure_gradient = " << quote(s.pressure_gradient) << "\n"
-    << "density_correction = " << quote(s.density_correction) << "\n"
-    << "ppe_operator = " << quote(s.ppe_operator) << "\n"
-    << "ppe_divergence = " << quote(s.ppe_divergence) << "\n"
-    << "ppe_pressure_level = " << quote(s.ppe_pressure_level) << "\n"
-    << "ppe_pressure_offset = " << num(s.ppe_pressure_offset) << "\n"
-    << "neighbor_storage = " << quote(s.neighbor_storage) << "\n"
-    << "force_sweep = " << boolean(s.force_sweep) << "\n"
-    << "ppe_solver = " << quote(s.ppe_solver) << "\n"
-    << "ppe_tolerance = " << num(s.ppe_tolerance) << "\n"
-    << "gpps_spacing = " << num(s.gpps_spacing) << "\n"
-    << "gpps_volume_relaxation = " << num(s.gpps_volume_relaxation) << "\n"
-    << "centre_positions = " << boolean(s.centre_positions) << "\n"
-    << "projection_points = " << quote(s.projection_points) << "\n"
-    << "reorder_every = " << s.reorder_every << "\n"
-    << "correction_threshold = " << num(s.correction_threshold) << "\n"
-    << "correction_max_iterations = " << s.correction_max_iterations << "\n"
-    << "correction_solver = " << quote(s.correction_solver) << "\n\n";
-  o << "[time]\n"
-    << "end = " << num(s.end) << "\n"
-    << "integrator = " << quote(s.integrator) << "\n"
-    << "dt = " << num(s.dt) << "\n"
-    << "cfl = " << num(s.cfl) << "\n"
-    << "rtol = " << num(s.rtol) << "\n"
-    << "atol = " << num(s.atol) << "\n"
-    << "max_steps = " << s.max_steps << "\n"
-    << "imex = " << boolean(s.imex) << "\n"
-    << "imex_pair = " << quote(s.imex_pair) << "\n"
-    << "imex_linear = " << boolean(s.imex_linear) << "\n\n";
-  o << "[output]\n"
-    << "directory = " << quote(s.directory) << "\n"
-    << "every = " << num(s.every) << "\n"
-    << "checkpoint_every = " << num(s.checkpoint_every) << "\n\n";
-  o << "[metrics]\n"
-    << "ghia_re = " << s.ghia_re << "\n"
-    << "poiseuille = " << boolean(s.poiseuille) << "\n"
-    << "interface = " << boolean(s.interface) << "\n";
-  return o.str();
-}
+std::string scene_to_toml(const Scene& s) { return write(s, false); }
+
+std::string scene_to_commented_toml(const Scene& s) { return write(s, true); }
 
 }  // namespace arksph

@@ -3,11 +3,14 @@
 //   f(q) = 1 - 3/2 q^2 + 3/4 q^3  (0 <= q < 1),  1/4 (2 - q)^3  (1 <= q < 2)
 #pragma once
 #include <numbers>
+#include <string_view>
 
 namespace arksph {
 
 // Header-only so that the pair loop can inline eval (kernels/kernel.hpp dispatches once per call).
 struct CubicSpline {
+  static constexpr std::string_view name = "cubic_spline";  // the scene value of method.kernel
+  static constexpr std::string_view summary = "cubic B-spline, support 2h (Cummins & Rudman 1999 eq. 5, Szewc et al. 2012 eq. 5)";
   static constexpr double support() { return 2.0; }
   static double sigma(int d) { return d == 1 ? 2.0 / 3.0 : 10.0 / (7.0 * std::numbers::pi); }
   static inline void eval(double q, double& f, double& df) {

@@ -6,11 +6,14 @@
 // The 1D constant is 1/24 (the integral of the bracket over the real line is 24).
 #pragma once
 #include <numbers>
+#include <string_view>
 
 namespace arksph {
 
 // Header-only so that the pair loop can inline eval (kernels/kernel.hpp dispatches once per call).
 struct QuarticSpline {
+  static constexpr std::string_view name = "quartic_spline";  // the scene value of method.kernel
+  static constexpr std::string_view summary = "quartic B-spline, support 2.5h (Cummins & Rudman 1999 eq. 6)";
   static constexpr double support() { return 2.5; }
   static double sigma(int d) { return d == 1 ? 1.0 / 24.0 : 96.0 / (1199.0 * std::numbers::pi); }
   static inline void eval(double q, double& f, double& df) {

@@ -5,11 +5,14 @@
 // 2D constant 7 / (478 pi) (Szewc eq. 7); 1D constant 1/120.
 #pragma once
 #include <numbers>
+#include <string_view>
 
 namespace arksph {
 
 // Header-only so that the pair loop can inline eval (kernels/kernel.hpp dispatches once per call).
 struct QuinticSpline {
+  static constexpr std::string_view name = "quintic_spline";  // the scene value of method.kernel
+  static constexpr std::string_view summary = "quintic B-spline of Morris et al., support 3h (Szewc et al. 2012 eq. 7)";
   static constexpr double support() { return 3.0; }
   static double sigma(int d) { return d == 1 ? 1.0 / 120.0 : 7.0 / (478.0 * std::numbers::pi); }
   static inline void eval(double q, double& f, double& df) {

@@ -3,11 +3,14 @@
 // 2D constant 7 / (4 pi) (Szewc eq. 6); 1D constant 3/4 (integral of f over the line is 4/3).
 #pragma once
 #include <numbers>
+#include <string_view>
 
 namespace arksph {
 
 // Header-only so that the pair loop can inline eval (kernels/kernel.hpp dispatches once per call).
 struct WendlandQuintic {
+  static constexpr std::string_view name = "wendland_quintic";  // the scene value of method.kernel
+  static constexpr std::string_view summary = "Wendland C2 kernel, support 2h (Szewc et al. 2012 eq. 6)";
   static constexpr double support() { return 2.0; }
   static double sigma(int d) { return d == 1 ? 0.75 : 7.0 / (4.0 * std::numbers::pi); }
   static inline void eval(double q, double& f, double& df) {

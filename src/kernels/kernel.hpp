@@ -1,26 +1,29 @@
 // Smoothing kernels W(r, h) = sigma_d / h^d * f(q), q = r / h, with compact support q < q_max.
-// Each shape lives in its own header (the file names cite the source) and is registered by name in
-// kernel_registry.cpp. Kernel::eval dispatches on the shape with a switch that the compiler hoists
-// out of pair loops, so the shape's polynomial is inlined.
+// Each shape lives in its own header (the file names cite the source) and is registered by one
+// entry in kernels/kernel_shapes.hpp. Kernel dispatches on the shape's index in that list once per
+// call (with_shape), so that the shape's polynomial is inlined in the loops.
 #pragma once
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "kernels/CubicSpline_Monaghan.hpp"
-#include "kernels/QuarticSpline_CumminsRudman1999.hpp"
-#include "kernels/QuinticSpline_Morris1997.hpp"
-#include "kernels/WendlandQuintic_Wendland1995.hpp"
+#include "kernels/kernel_shapes.hpp"
 
 namespace arksph {
 
-enum class KernelShapeId { cubic_spline, quartic_spline, wendland_quintic, quintic_spline };
-
+// Calls f.template operator()<Shape>() for the shape at `index` of the list.
+template <class... Shapes, class F>
+inline void with_shape(ShapeList<Shapes...>, int index, F&& f) {
+  int k = 0;
+  (void)((k++ == index ? (f.template operator()<Shapes>(), true) : false) || ...);
+}
 // A shape bound to a smoothing length and a dimension: the object the right-hand side uses.
 class Kernel {
  public:
-  Kernel(std::string name, KernelShapeId shape, double h, int dimension);
+  // `shape`: the index of the shape in KernelShapes.
+  Kernel(std::string name, int shape, double h, int dimension);
   const std::string& name() const { return name_; }
   double h() const { return h_; }
   int dimension() const { return dim_; }
@@ -39,12 +42,7 @@ class Kernel {
   double d2Wdr2(double r) const {
     const double q = r * inv_h_;
     double d2 = 0.0;
-    switch (shape_) {
-      case KernelShapeId::cubic_spline: d2 = CubicSpline::d2(q); break;
-      case KernelShapeId::quartic_spline: d2 = QuarticSpline::d2(q); break;
-      case KernelShapeId::wendland_quintic: d2 = WendlandQuintic::d2(q); break;
-      case KernelShapeId::quintic_spline: d2 = QuinticSpline::d2(q); break;
-    }
+    with_shape(KernelShapes{}, shape_, [&]<class S>() { d2 = S::d2(q); });
     return norm_ * inv_h_ * inv_h_ * d2;
   }
   // Both at once: w = W(r), f = (dW/dr) / r, so that grad_a W_ab = f * r_ab (f = 0 at r = 0).
@@ -58,20 +56,13 @@ class Kernel {
 
  private:
   void shape(double q, double& f, double& df) const {
-    switch (shape_) {
-      case KernelShapeId::cubic_spline: return CubicSpline::eval(q, f, df);
-      case KernelShapeId::quartic_spline: return QuarticSpline::eval(q, f, df);
-      case KernelShapeId::wendland_quintic: return WendlandQuintic::eval(q, f, df);
-      case KernelShapeId::quintic_spline: return QuinticSpline::eval(q, f, df);
-    }
-    f = df = 0.0;
+    f = df = 0.0;  // for the compiler: with_shape always calls one shape
+    with_shape(KernelShapes{}, shape_, [&]<class S>() { S::eval(q, f, df); });
   }
-  // f(q) and f'(q) / q; the Wendland shape provides it without a division.
+  // f(q) and f'(q) / q (without a division where the shape provides eval_over_q).
   void shape_over_q(double q, double& f, double& df_over_q) const {
-    if (shape_ == KernelShapeId::wendland_quintic) return WendlandQuintic::eval_over_q(q, f, df_over_q);
-    double df;
-    shape(q, f, df);
-    df_over_q = q > 0 ? df / q : 0.0;
+    f = df_over_q = 0.0;  // for the compiler: with_shape always calls one shape
+    with_shape(KernelShapes{}, shape_, [&]<class S>() { over_q<S>(q, f, df_over_q); });
   }
 
  public:
@@ -88,12 +79,7 @@ class Kernel {
       eval_many_xy_with<false>(n, rx, ry, w, f);
   }
   void eval_many(std::size_t n, const double* r2, double* w, double* f) const {
-    switch (shape_) {
-      case KernelShapeId::cubic_spline: return eval_many_as<CubicSpline>(n, r2, w, f);
-      case KernelShapeId::quartic_spline: return eval_many_as<QuarticSpline>(n, r2, w, f);
-      case KernelShapeId::wendland_quintic: return eval_many_as<WendlandQuintic>(n, r2, w, f);
-      case KernelShapeId::quintic_spline: return eval_many_as<QuinticSpline>(n, r2, w, f);
-    }
+    with_shape(KernelShapes{}, shape_, [&]<class S>() { eval_many_as<S>(n, r2, w, f); });
   }
 
  private:
@@ -122,12 +108,7 @@ class Kernel {
   }
   template <bool with_w>
   void eval_many_xy_with(std::size_t n, const double* rx, const double* ry, double* w, double* f) const {
-    switch (shape_) {
-      case KernelShapeId::cubic_spline: return eval_many_xy_as<CubicSpline, with_w>(n, rx, ry, w, f);
-      case KernelShapeId::quartic_spline: return eval_many_xy_as<QuarticSpline, with_w>(n, rx, ry, w, f);
-      case KernelShapeId::wendland_quintic: return eval_many_xy_as<WendlandQuintic, with_w>(n, rx, ry, w, f);
-      case KernelShapeId::quintic_spline: return eval_many_xy_as<QuinticSpline, with_w>(n, rx, ry, w, f);
-    }
+    with_shape(KernelShapes{}, shape_, [&]<class S>() { eval_many_xy_as<S, with_w>(n, rx, ry, w, f); });
   }
   template <class Shape>
   void eval_many_as(std::size_t n, const double* r2, double* w, double* f) const {
@@ -144,13 +125,15 @@ class Kernel {
     }
   }
   std::string name_;
-  KernelShapeId shape_;
+  int shape_;
   double h_, inv_h_, norm_, radius_, norm_inv_h2_;
   int dim_;
 };
 
 // Registry: names in registration order, and construction by name (throws std::out_of_range).
 std::vector<std::string> kernel_names();
+// One line per shape: "name: summary" (arksph list).
+std::vector<std::pair<std::string, std::string>> kernel_summaries();
 Kernel make_kernel(const std::string& name, double h, int dimension);
 
 }  // namespace arksph

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/param_builder.hpp"
 #include "core/particle_order.hpp"
 #include "kernels/kernel.hpp"
 #include "projection/correction_kinsol.hpp"
@@ -10,6 +11,30 @@
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
+
+const Registry<Selected>& correction_solvers() {
+  static const Registry<Selected> r("correction_solver", "method.correction_solver", {
+      {"fixed_point", "repeated linear solves of Szewc et al. 2012 eq. 58"},
+      {"kinsol", "KINSOL Newton on eq. 59 with the Laplacian as frozen Jacobian (KLU)"},
+      {"newton", "Newton with the exact Jacobian of the summation density"},
+  });
+  return r;
+}
+
+const Registry<Selected>& density_corrections() {
+  static const Registry<Selected> r("density_correction", "method.density_correction", {
+      {"none", "no position correction"},
+      {"pozorski_wawrenczuk", "positions shifted so that the summation density returns to rho0 (Szewc et al. 2012 §9, eqs. 57-58)", {},
+       {number("method.correction_threshold", 1e-3).in(at_least(0))
+            .doc("r.m.s. relative density error that triggers the correction").to(&Scene::correction_threshold),
+        whole("method.correction_max_iterations", 1).in(between(1, 1000))
+            .doc("correction solves per step at most (Szewc: 1)").to(&Scene::correction_max_iterations),
+        choice("method.correction_solver", "fixed_point").family("correction_solver")
+            .doc("solver of the correction's Poisson problem").to(&Scene::correction_solver)},
+       {.schemes = {"isph", "isph-gpps"}}},
+  });
+  return r;
+}
 
 DensityCorrection::DensityCorrection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),

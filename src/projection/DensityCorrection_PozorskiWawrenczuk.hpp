@@ -13,11 +13,17 @@
 #include <memory>
 #include <vector>
 
+#include "core/registry.hpp"
 #include "core/scene.hpp"
 #include "projection/poisson_solver.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
+
+// method.density_correction: "none" | "pozorski_wawrenczuk", with the correction's parameters.
+const Registry<Selected>& density_corrections();
+// method.correction_solver: how the correction's Poisson problem is solved.
+const Registry<Selected>& correction_solvers();
 
 struct CorrectionStats {
   long applications = 0;   // steps in which it ran

@@ -1,11 +1,25 @@
 #include "projection/ProjectionGrid_Szewc2012.hpp"
 
+#include "core/param_builder.hpp"
+
 #include <cmath>
 
 #include "core/errors.hpp"
 #include "projection/grid_transfer.hpp"
 
 namespace arksph {
+
+const std::vector<Param>& grid_projection_params() {
+  static const std::vector<Param> params = {
+      number("method.gpps_spacing", 0.0).in(at_least(0)).unit("m").schemes({"isph-gpps"})
+          .doc("cell size of the auxiliary Poisson grid (Szewc et al. 2012 §4.2); 0: fluid.spacing; must divide the box")
+          .to(&Scene::gpps_spacing),
+      number("method.gpps_volume_relaxation", 0.0).in(between(0, 1))
+          .doc("beta of the source term -beta (phi - 1) / dt^2, phi = particle volume per cell / cell volume (0: off)")
+          .to(&Scene::gpps_volume_relaxation),
+  };
+  return params;
+}
 
 GridSpec gpps_grid(const Scene& scene) {
   GridSpec g;

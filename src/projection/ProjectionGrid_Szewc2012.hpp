@@ -11,6 +11,7 @@
 // The density on the grid is the volume-weighted mean of the particles' phase densities, so for one
 // phase it is uniform and the matrix never changes.
 #pragma once
+#include "core/parameter.hpp"
 #include <vector>
 
 #include "core/scene.hpp"
@@ -18,6 +19,9 @@
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
+
+// The keys of the grid projection (isph-gpps), in the order of the scene file.
+const std::vector<Param>& grid_projection_params();
 
 // The auxiliary grid of a scene: cells of method.gpps_spacing (0: fluid.spacing) over the domain.
 GridSpec gpps_grid(const Scene& scene);

@@ -16,6 +16,8 @@
 
 #include <Eigen/SparseCore>
 
+#include "core/registry.hpp"
+
 namespace arksph {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
@@ -33,6 +35,10 @@ class PoissonSolver {
   // Solves A p = b; p holds the initial guess on entry (used by iterative solvers).
   virtual SolveReport solve(const SparseMatrix& A, const std::vector<double>& b, std::vector<double>& p) = 0;
 };
+
+// tolerance: relative residual target of iterative solvers.
+using PoissonSolverFactory = std::unique_ptr<PoissonSolver> (*)(double tolerance);
+const Registry<PoissonSolverFactory>& poisson_solvers();  // method.ppe_solver
 
 std::vector<std::string> poisson_solver_names();
 // tolerance: relative residual target of iterative solvers.

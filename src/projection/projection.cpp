@@ -5,7 +5,9 @@
 #include <numeric>
 
 #include "core/errors.hpp"
+#include "core/param_builder.hpp"
 #include "core/particle_order.hpp"
+#include "core/scheme.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
@@ -16,6 +18,34 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
+const std::vector<Param>& projection_params() {
+  static const std::vector<Param> params = {
+      choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})
+          .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; klu only)")
+          .to(&Scene::ppe_operator),
+      choice("method.ppe_divergence", "cummins_rudman").choices({"cummins_rudman", "difference"})
+          .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts")
+          .to(&Scene::ppe_divergence),
+      choice("method.ppe_pressure_level", "zero_mean").choices({"zero_mean", "zero_min"})
+          .doc("free level of P of the Neumann problem: zero mean, or zero minimum (P >= 0, so C&R eq. 11 never attracts)")
+          .to(&Scene::ppe_pressure_level),
+      number("method.ppe_pressure_offset", 0.0).in(at_least(0))
+          .doc("constant added to P after the level (a background pressure)").to(&Scene::ppe_pressure_offset),
+  };
+  return params;
+}
+
+const std::vector<Param>& projection_time_params() {
+  static const std::vector<Param> params = {
+      flag("method.centre_positions", true).doc("positions centred in time (Cummins & Rudman 1999 eq. 12)")
+          .to(&Scene::centre_positions),
+      choice("method.projection_points", "step").choices({"step", "stages"})
+          .doc("project after each accepted step (C&R), or also after every ERK stage")
+          .to(&Scene::projection_points),
+  };
+  return params;
+}
+
 Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
@@ -25,8 +55,8 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {
-  if (scene.scheme == "isph-gpps") grid_ = std::make_unique<GridProjection>(scene);
-  if (scene.density_correction == "pozorski_wawrenczuk") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+  if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
+  if (scene.density_correction != "none") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
 }
 
 void Projection::forget_warm_start() {

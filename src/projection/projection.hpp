@@ -10,6 +10,7 @@
 // Scheme isph-gpps replaces steps 2-3 by the grid-projected Poisson solver of Szewc et al. 2012 §4.2
 // (ProjectionGrid_Szewc2012.hpp): same source, Poisson equation on a regular grid, u = u* - dt a_grid.
 #pragma once
+#include "core/parameter.hpp"
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,10 @@
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
+
+// The keys of the projection schemes (isph, isph-gpps), in the order of the scene file.
+const std::vector<Param>& projection_params();
+const std::vector<Param>& projection_time_params();
 
 struct ProjectionStats {
   long solves = 0;

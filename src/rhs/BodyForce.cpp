@@ -2,7 +2,7 @@
 // Constant expressions are evaluated once; others at every particle and call.
 #include <memory>
 
-#include "io/expression.hpp"
+#include "core/expression.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {

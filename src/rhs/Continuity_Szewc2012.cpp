@@ -2,6 +2,7 @@
 //   d rho_a / dt = sum_b m_b (u_a - u_b) . grad_a W_ab,
 // with the divergence velocities of the ghosts (free-slip images optional, Szewc §6).
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -25,5 +26,10 @@ class ContinuitySzewc final : public ParticleTerm<ContinuitySzewc> {
 };
 
 std::unique_ptr<Term> make_continuity() { return std::make_unique<ContinuitySzewc>(); }
+
+Part<TermFactory> density_continuity() {
+  return {"continuity", "density from the continuity equation in the ODE state (Szewc et al. 2012 eq. 19)",
+          nullptr};
+}
 
 }  // namespace arksph

@@ -1,6 +1,7 @@
 // Density by summation, Szewc et al. 2012 eq. 21 (Hu & Adams):  rho_a = m_a sum_b W_ab,
 // the sum over all neighbours including ghosts and a itself.
 #include "kernels/kernel.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -21,5 +22,9 @@ class DensitySummation final : public Term {
 };
 
 std::unique_ptr<Term> make_density_summation() { return std::make_unique<DensitySummation>(); }
+
+Part<TermFactory> density_summation() {
+  return {"summation", "density by kernel summation over the neighbours (Szewc et al. 2012 eq. 21)"};
+}
 
 }  // namespace arksph

@@ -4,6 +4,7 @@
 // e is part of the ODE state (the energy equation 14, Energy_Basa2008.cpp). setup.cpp chooses
 // e(0) = c^2 / (gamma (gamma - 1)), so that the initial sound speed sqrt(gamma p / rho) is the
 // scene's c (Basa: 125 kPa at rho = 1, i.e. c = 418 m/s for gamma = 1.4).
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -23,5 +24,14 @@ class EquationOfStateIdealGas final : public Term {
 };
 
 std::unique_ptr<Term> make_eos_ideal_gas(double gamma) { return std::make_unique<EquationOfStateIdealGas>(gamma); }
+
+Part<TermFactory> equation_of_state_ideal_gas() {
+  return {"ideal_gas", "ideal gas p = (gamma - 1) rho e, with the energy equation in the state (Basa et al. 2008 eqs. 12, 14)",
+          nullptr,
+          {number("method.gas_gamma", 1.4).in(above(1))
+               .doc("ideal_gas: ratio of specific heats; e(0) is chosen so that the sound speed is method.sound_speed")
+               .to(&Scene::gas_gamma)},
+          {.schemes = {"wcsph"}}};
+}
 
 }  // namespace arksph

@@ -3,6 +3,7 @@
 // p_b an optional background pressure (Morris et al. 1997) that keeps p > 0 against tensile clumping.
 #include <cmath>
 
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -40,6 +41,20 @@ class EquationOfStateTait final : public Term {
 
 std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma, double background) {
   return std::make_unique<EquationOfStateTait>(sound_speed, gamma, background);
+}
+
+// Tait's parameters; method.sound_speed is resolved at set-up (resolve_sound_speed) and
+// terms_from_scene builds the term with it.
+Part<TermFactory> equation_of_state_tait() {
+  return {"tait", "Tait equation of state (Cummins & Rudman 1999 eq. 7, Basa et al. 2008 eq. 13)", nullptr,
+          {number("method.sound_speed", 0.0).in(at_least(0)).unit("m/s").schemes({"wcsph"})
+               .doc("WCSPH sound speed c0; 0: 10 x the reference speed (walls, initial speeds, sqrt(|g| L))")
+               .to(&Scene::sound_speed),
+           number("method.tait_gamma", 7.0).in(at_least(1))
+               .doc("exponent gamma of the Tait equation (Cummins & Rudman 1999 eq. 7)").to(&Scene::tait_gamma),
+           number("method.background_pressure", 0.0).in(at_least(0)).unit("Pa")
+               .doc("constant added to the Tait pressure (Morris et al. 1997); keeps p > 0 at the walls")
+               .to(&Scene::background_pressure)}};
 }
 
 }  // namespace arksph

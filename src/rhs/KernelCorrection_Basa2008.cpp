@@ -3,6 +3,7 @@
 // ghosts, reflected where the ghost is a mirror image (the point set is mirror-symmetric there).
 // Runs in the pressure stage, when the densities of all points (V_b = m_b / rho_b) are final.
 #include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/term_registry.hpp"
 
 #include <cmath>
 
@@ -103,10 +104,17 @@ class KernelCorrection final : public Term {
 
 }  // namespace
 
-std::unique_ptr<Term> make_kernel_correction(const std::string& kind) {
-  if (kind == "shepard") return std::make_unique<KernelCorrection>(FluidFields::Correction::shepard);
-  if (kind == "bonet_lok") return std::make_unique<KernelCorrection>(FluidFields::Correction::bonet_lok);
-  throw std::out_of_range("unknown kernel correction '" + kind + "'");
+Part<TermFactory> kernel_correction_none() { return {"none", "plain kernel gradients"}; }
+Part<TermFactory> kernel_correction_shepard() {
+  return {"shepard", "Shepard-normalised kernel gradients (Basa et al. 2008 eqs. 21-23)", [](const Scene&) -> std::unique_ptr<Term> {
+            return std::make_unique<KernelCorrection>(FluidFields::Correction::shepard);
+          }};
+}
+Part<TermFactory> kernel_correction_bonet_lok() {
+  return {"bonet_lok", "Bonet-Lok corrected gradients, exact for linear fields (Basa et al. 2008 eqs. 24-26)",
+          [](const Scene&) -> std::unique_ptr<Term> {
+            return std::make_unique<KernelCorrection>(FluidFields::Correction::bonet_lok);
+          }};
 }
 
 }  // namespace arksph

@@ -5,6 +5,7 @@
 // becomes the corrected gradient. Either breaks the exact conservation.
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -34,8 +35,9 @@ class PressureGradientColagrossi final : public ParticleTerm<PressureGradientCol
   }
 };
 
-std::unique_ptr<Term> make_pressure_gradient_colagrossi() {
-  return std::make_unique<PressureGradientColagrossi>();
+Part<TermFactory> pressure_gradient_colagrossi() {
+  return {"colagrossi", "(p_a + p_b) form of Colagrossi & Landrini 2003 (Szewc et al. 2012 eq. 23)",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<PressureGradientColagrossi>(); }};
 }
 
 }  // namespace arksph

@@ -5,6 +5,7 @@
 // becomes the corrected gradient. Either breaks the exact conservation.
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -29,8 +30,9 @@ class PressureGradientMonaghan final : public ParticleTerm<PressureGradientMonag
   }
 };
 
-std::unique_ptr<Term> make_pressure_gradient_monaghan() {
-  return std::make_unique<PressureGradientMonaghan>();
+Part<TermFactory> pressure_gradient_monaghan() {
+  return {"monaghan", "(p_a / rho_a^2 + p_b / rho_b^2) form of Monaghan 1992 (Cummins & Rudman 1999 eq. 1)",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<PressureGradientMonaghan>(); }};
 }
 
 }  // namespace arksph

@@ -8,6 +8,7 @@
 #include "kernels/kernel.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -42,6 +43,14 @@ class ViscosityCleary final : public ParticleTerm<ViscosityCleary> {
   double xi_;
 };
 
-std::unique_ptr<Term> make_viscosity_cleary(double xi) { return std::make_unique<ViscosityCleary>(xi); }
+Part<TermFactory> viscosity_cleary() {
+  return {"cleary", "model D of Basa et al. 2008 (eq. 34), Cleary's viscosity with calibration constant xi",
+          [](const Scene& s) -> std::unique_ptr<Term> {
+            return std::make_unique<ViscosityCleary>(part_param<double>(s, "method.cleary_xi"));
+          },
+          {number("method.cleary_xi", 4.96333).in(above(0))
+               .doc("model D calibration constant xi (Basa et al. 2008 eq. 34; 4 is exact for a divergence-free 2D field)")},
+          {.can_be_implicit = true}};
+}
 
 }  // namespace arksph

@@ -10,6 +10,7 @@
 
 #include "kernels/kernel.hpp"
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -70,6 +71,10 @@ class ViscosityDirect final : public ParticleTerm<ViscosityDirect> {
   }
 };
 
-std::unique_ptr<Term> make_viscosity_direct() { return std::make_unique<ViscosityDirect>(); }
+Part<TermFactory> viscosity_direct() {
+  return {"direct", "model A of Basa et al. 2008 (eqs. 27-28): direct second derivatives of the kernel",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<ViscosityDirect>(); }, {},
+          {.can_be_implicit = true}};
+}
 
 }  // namespace arksph

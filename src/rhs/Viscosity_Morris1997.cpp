@@ -5,6 +5,7 @@
 // becomes (r_ab . G_ab) / r_ab^2.
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -40,6 +41,10 @@ class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
   }
 };
 
-std::unique_ptr<Term> make_viscosity_morris() { return std::make_unique<ViscosityMorris>(); }
+Part<TermFactory> viscosity_morris() {
+  return {"morris", "model E of Basa et al. 2008 (eq. 35), the viscosity of Morris et al. 1997",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<ViscosityMorris>(); }, {},
+          {.can_be_implicit = true}};
+}
 
 }  // namespace arksph

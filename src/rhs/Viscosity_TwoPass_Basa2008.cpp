@@ -14,6 +14,7 @@
 #include "kernels/kernel.hpp"
 #include "neighbors/cell_list.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -95,6 +96,10 @@ class ViscosityTwoPass final : public Term {
   mutable std::vector<double> dux_, duy_, dvx_, dvy_, txx_, txy_, tyy_;
 };
 
-std::unique_ptr<Term> make_viscosity_two_pass() { return std::make_unique<ViscosityTwoPass>(); }
+Part<TermFactory> viscosity_two_pass() {
+  return {"two_pass", "model B of Basa et al. 2008 (eq. 29): SPH divergence of the SPH velocity gradient",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<ViscosityTwoPass>(); }, {},
+          {.stencil_depth = 2, .can_be_implicit = true}};
+}
 
 }  // namespace arksph

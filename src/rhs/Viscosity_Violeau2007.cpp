@@ -11,6 +11,7 @@
 #include "kernels/kernel.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -41,7 +42,15 @@ class ViscosityVioleau final : public ParticleTerm<ViscosityVioleau> {
   std::string name_;
 };
 
-std::unique_ptr<Term> make_viscosity_violeau() { return std::make_unique<ViscosityVioleau>("viscosity:violeau"); }
-std::unique_ptr<Term> make_viscosity_monaghan() { return std::make_unique<ViscosityVioleau>("viscosity:monaghan"); }
+Part<TermFactory> viscosity_violeau() {
+  return {"violeau", "model C of Basa et al. 2008 (eq. 33), after Violeau",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<ViscosityVioleau>("viscosity:violeau"); },
+          {}, {.can_be_implicit = true}};
+}
+Part<TermFactory> viscosity_monaghan() {
+  return {"monaghan", "the same pair form as Szewc et al. 2012 eq. 24 and Cummins & Rudman 1999 eq. 2",
+          [](const Scene&) -> std::unique_ptr<Term> { return std::make_unique<ViscosityVioleau>("viscosity:monaghan"); },
+          {}, {.can_be_implicit = true}};
+}
 
 }  // namespace arksph

@@ -16,7 +16,7 @@
 #include <sstream>
 #include <thread>
 
-#include "app/interrupt.hpp"
+#include "run/interrupt.hpp"
 #include "core/errors.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_reader.hpp"

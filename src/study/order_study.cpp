@@ -11,10 +11,10 @@
 #include <memory>
 #include <sstream>
 
-#include "app/setup.hpp"
-#include "app/time_stepper.hpp"
+#include "run/setup.hpp"
+#include "run/time_stepper.hpp"
 #include "core/errors.hpp"
-#include "core/names.hpp"
+#include "io/names.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
 #include "study/reference_error.hpp"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/particles.hpp"
-#include "io/expression.hpp"
+#include "core/expression.hpp"
 
 namespace arksph {
 

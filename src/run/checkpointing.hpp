@@ -17,7 +17,7 @@
 #pragma once
 #include <string>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "io/checkpoint.hpp"
 
 namespace arksph {

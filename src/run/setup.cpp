@@ -1,4 +1,4 @@
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Output continuation after a restart: read what the earlier run wrote, then carry it into the new
 // RunOutput (frame numbering, PVD entries, CSV rows, the Poiseuille window maximum).
-#include "app/output_resume.hpp"
+#include "run/output_resume.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "app/run_output.hpp"
+#include "run/run_output.hpp"
 #include "io/csv_writer.hpp"
 
 namespace arksph {

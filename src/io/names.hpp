@@ -1,6 +1,5 @@
-// Names registered by the numerical modules, grouped by family, for validation and `arksph list`.
-// Families: "kernel", "scheme", "viscosity_model", "density_mode", "pressure_gradient",
-// "density_correction", "erk_table".
+// Names registered by the numerical modules, grouped by family (io/scene_catalog.hpp lists the
+// families), for validation and `arksph list`.
 #pragma once
 #include <string>
 #include <vector>

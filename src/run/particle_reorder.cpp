@@ -1,4 +1,4 @@
-#include "app/particle_reorder.hpp"
+#include "run/particle_reorder.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -2,7 +2,7 @@
 //   set up -> write t = 0 -> repeat { advance one step; check the state } and at each output time
 //   { refresh fields; diagnostics; write frame, CSV row }, at each checkpoint time { checkpoint.h5 }
 //   -> checkpoint.h5, summary.json. A restart (options.restart) starts the same loop from a checkpoint.
-#include "app/simulation.hpp"
+#include "run/simulation.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -10,15 +10,15 @@
 #include <filesystem>
 #include <iostream>
 
-#include "app/checkpointing.hpp"  // checkpoints and restart
-#include "app/interrupt.hpp"
-#include "app/output_resume.hpp"
-#include "app/particle_reorder.hpp"
-#include "app/progress.hpp"
-#include "app/run_output.hpp"
-#include "app/setup.hpp"
-#include "app/state_check.hpp"
-#include "app/time_stepper.hpp"
+#include "run/checkpointing.hpp"  // checkpoints and restart
+#include "run/interrupt.hpp"
+#include "run/output_resume.hpp"
+#include "run/particle_reorder.hpp"
+#include "run/progress.hpp"
+#include "run/run_output.hpp"
+#include "run/setup.hpp"
+#include "run/state_check.hpp"
+#include "run/time_stepper.hpp"
 #include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
 #include "diagnostics/flow_metrics.hpp"

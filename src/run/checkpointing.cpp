@@ -1,4 +1,4 @@
-#include "app/checkpointing.hpp"
+#include "run/checkpointing.hpp"
 
 #include <algorithm>
 #include <cmath>

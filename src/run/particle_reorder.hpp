@@ -13,7 +13,7 @@
 #pragma once
 #include <vector>
 
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 #include "core/particle_order.hpp"
 #include "integrate/time_integrator.hpp"
 #include "integrate/viscous_split.hpp"

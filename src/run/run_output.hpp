@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "app/setup.hpp"
-#include "app/simulation.hpp"
+#include "run/setup.hpp"
+#include "run/simulation.hpp"
 #include "diagnostics/flow_metrics.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"

@@ -1,4 +1,4 @@
-#include "app/state_check.hpp"
+#include "run/state_check.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Signal handlers for a clean interruption. The flag is the one piece of process-wide state: a
 // POSIX signal handler cannot reach anything else (async-signal-safe calls only).
-#include "app/interrupt.hpp"
+#include "run/interrupt.hpp"
 
 #include <csignal>
 #include <initializer_list>

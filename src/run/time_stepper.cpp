@@ -1,4 +1,4 @@
-#include "app/time_stepper.hpp"
+#include "run/time_stepper.hpp"
 
 namespace arksph {
 

@@ -1,7 +1,7 @@
 // Checks the state after every step: NaN/Inf, blow-up (speed beyond a bound) and particles escaping
 // through a wall. Throws NumericalFailure naming the time, the particle id and the quantity.
 #pragma once
-#include "app/setup.hpp"
+#include "run/setup.hpp"
 
 namespace arksph {
 

@@ -1,6 +1,6 @@
 // muParser wrapper: see expression.hpp. The parser stores raw pointers to the variables, so parser and
 // variables live together in one heap block (State) that a move hands over and a copy rebuilds.
-#include "io/expression.hpp"
+#include "core/expression.hpp"
 
 #include <muParser.h>
 

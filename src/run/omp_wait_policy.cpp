@@ -1,4 +1,4 @@
-#include "app/omp_wait_policy.hpp"
+#include "run/omp_wait_policy.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "app/run_output.hpp"
+#include "run/run_output.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "diagnostics/nearest_neighbor.hpp"
 #include "diagnostics/phase_interface.hpp"
 #include "diagnostics/poiseuille.hpp"
-#include "io/expression.hpp"
+#include "core/expression.hpp"
 #include "io/vtp_writer.hpp"
 
 namespace arksph {

@@ -1,0 +1,205 @@
+// The general scene keys (those not declared by a registered part), in the order of the scene file,
+// and their assembly with the families' keys into the scene catalog.
+#include <algorithm>
+
+#include "boundary/wall_velocity_rules.hpp"
+#include "core/param_builder.hpp"
+#include "core/scheme.hpp"
+#include "integrate/time_params.hpp"
+#include "io/scene_catalog.hpp"
+#include "kernels/kernel.hpp"
+#include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/ProjectionGrid_Szewc2012.hpp"
+#include "projection/poisson_solver.hpp"
+#include "projection/projection.hpp"
+#include "rhs/term_registry.hpp"
+
+namespace arksph {
+
+namespace {
+
+ParamBuilder numbers(std::string key) {
+  return ParamBuilder(std::move(key), Param::Type::numbers, std::vector<double>{});
+}
+ParamBuilder expressions(std::string key, std::vector<std::string> variables) {
+  ParamBuilder b(std::move(key), Param::Type::expressions, std::vector<std::string>{"0", "0"});
+  b.variables(std::move(variables));
+  return b;
+}
+// A sub-table read by the scene reader's own code (a side of the box); listed for the reference.
+ParamBuilder table(std::string key, std::string doc) {
+  ParamBuilder b(std::move(key), Param::Type::table, std::string());
+  b.doc(std::move(doc)).custom();
+  return b;
+}
+
+FamilyInfo kernel_family() {
+  FamilyInfo info{"kernel", "method.kernel", {}, {}};
+  for (const auto& [name, summary] : kernel_summaries()) info.entries.push_back({name, summary, {}, {}});
+  return info;
+}
+
+// One entry per key; a family selector pulls in the family's keys right after itself.
+struct Group {
+  std::vector<Param> keys;
+  std::string owner;
+};
+
+std::vector<Group> general_keys() {
+  const std::string side_doc =
+      "{ kind = \"wall\" | \"periodic\", velocity = [wall velocity], slip = \"no_slip\" | \"free_slip\" }; "
+      "a periodic side needs its opposite periodic too";
+  return {
+      {{text("scene.name", "unnamed").doc("label for messages, summary.json and the default output directory")
+            .to(&Scene::name),
+        integer("scene.dimension", 2).allowed({1, 2}).doc("1 or 2").to(&Scene::dimension),
+        numbers("domain.min").required().custom().unit("m").doc("lower corner of the fluid box, one number per dimension"),
+        numbers("domain.max").required().custom().unit("m").doc("upper corner (max > min in every component)"),
+        table("boundary.left", side_doc),
+        table("boundary.right", side_doc),
+        table("boundary.bottom", side_doc + " (2D only)"),
+        table("boundary.top", side_doc + " (2D only)"),
+        number("boundary.corner_alpha", 0.0).in(between(-1, 1))
+            .doc("corner ghost weighting alpha (Szewc et al. 2012 eq. 46)").to(&Scene::corner_alpha),
+        flag("boundary.free_slip_divergence", false)
+            .doc("free-slip images for the velocity divergence only (Szewc et al. 2012 §6)")
+            .to(&Scene::free_slip_divergence),
+        choice("boundary.wall_velocity", "mirror").family("wall_velocity")
+            .doc("tangential velocity of no-slip ghosts").to(&Scene::wall_velocity),
+        flag("boundary.wall_particles", false)
+            .doc("particles on the no-slip walls with the wall velocity, one per fluid particle within dx "
+                 "(Basa et al. 2008 §6.1.2; 2D)")
+            .to(&Scene::wall_particles),
+        number("fluid.spacing", 0.02).required().in(above(0)).unit("m")
+            .doc("initial lattice spacing dx; must divide each domain length").to(&Scene::spacing),
+        number("fluid.density", 1.0).in(above(0)).unit("kg/m^d").doc("reference density rho0").to(&Scene::density),
+        number("fluid.viscosity", 0.01).in(at_least(0)).unit("m^2/s").doc("kinematic viscosity nu")
+            .to(&Scene::viscosity),
+        expressions("fluid.body_force", {"x", "y", "t"}).unit("m/s^2")
+            .doc("acceleration g(x, y, t), one expression per dimension").to(&Scene::body_force),
+        flag("fluid.shuffle_initial_order", false)
+            .doc("particles stored in a fixed pseudo-random order at t = 0 (ids kept): benchmarks of a mixed run")
+            .to(&Scene::shuffle_initial_order),
+        expressions("initial.velocity", {"x", "y"}).unit("m/s")
+            .doc("initial velocity u(x, y), one expression per dimension").to(&Scene::initial_velocity),
+        expressions("initial.offset", {"x", "y"}).unit("m")
+            .doc("displacement of each lattice point (x, y) at t = 0").to(&Scene::initial_offset),
+        ParamBuilder("phase.where", Param::Type::text, std::string()).required().custom()
+            .doc("[[phase]]: region of a further phase, an expression in x, y; non-zero selects; must select a particle"),
+        ParamBuilder("phase.density", Param::Type::number, 1.0).required().custom().in(above(0))
+            .doc("[[phase]]: reference density of the phase (same number density, other mass)"),
+        choice("method.scheme", "wcsph").family("scheme").doc("time-stepping scheme").to(&Scene::scheme),
+        choice("method.kernel", "wendland_quintic").family("kernel").doc("smoothing kernel").to(&Scene::kernel),
+        number("method.h_over_dx", 2.0).in(between(0.5, 4)).doc("smoothing length h / dx").to(&Scene::h_over_dx),
+        choice("method.viscosity_model", "morris").family("viscosity_model")
+            .doc("viscous term (Basa et al. 2008 models A-E)").to(&Scene::viscosity_model),
+        choice("method.kernel_correction", "none").family("kernel_correction")
+            .doc("corrected kernel gradients in the pressure and viscous terms (Basa et al. 2008 §4)")
+            .to(&Scene::kernel_correction),
+        flag("method.pressure_reduction", false)
+            .doc("local average pressure subtracted in the pressure gradient (Basa et al. 2008 eq. 20)")
+            .to(&Scene::pressure_reduction),
+        choice("method.equation_of_state", "tait").family("equation_of_state")
+            .doc("equation of state of wcsph").to(&Scene::equation_of_state),
+        choice("method.density_mode", "continuity").family("density_mode")
+            .doc("how the density is obtained").to(&Scene::density_mode),
+        choice("method.pressure_gradient", "colagrossi").family("pressure_gradient")
+            .doc("symmetric form of the pressure gradient (wcsph)").to(&Scene::pressure_gradient),
+        choice("method.density_correction", "none").family("density_correction")
+            .doc("position correction after the projection (projection schemes)").to(&Scene::density_correction)},
+       ""},
+      {projection_params(), "isph"},
+      {{choice("method.neighbor_storage", "pairs").choices({"pairs", "candidates"})
+            .doc("kernel values stored per pair (fast), or only the candidates stored and the kernel recomputed by every term (less memory)")
+            .to(&Scene::neighbor_storage),
+        flag("method.force_sweep", true)
+            .doc("force terms share one neighbour gather per particle (no pair storage); same results")
+            .to(&Scene::force_sweep),
+        choice("method.ppe_solver", "auto").family("ppe_solver").doc("Poisson solver of the projection schemes")
+            .to(&Scene::ppe_solver)},
+       ""},
+      {grid_projection_params(), "isph-gpps"},
+      {projection_time_params(), "isph"},
+      {{integer("method.reorder_every", 100).in(at_least(0))
+            .doc("re-sort the particles by cell at t = 0 and every this many steps (0: never)")
+            .to(&Scene::reorder_every),
+        number("time.end", 1.0).required().in(above(0)).unit("s").doc("final simulated time").to(&Scene::end)},
+       ""},
+      {time_params(), "time integration"},
+      {imex_params(), "imex"},
+      {{text("output.directory", "").doc("output folder (--out overrides); default runs/<scene.name>")
+            .to(&Scene::directory),
+        number("output.every", 0.0).in(at_least(0)).unit("s")
+            .doc("simulated time between VTP frames (0: first and last only)").to(&Scene::every),
+        number("output.checkpoint_every", 0.0).in(at_least(0)).unit("s")
+            .doc("simulated time between checkpoint.h5 writes (0: only at the end)").to(&Scene::checkpoint_every),
+        integer("metrics.ghia_re", 0).allowed({0, 100, 1000})
+            .doc("Ghia et al. 1982 centreline errors at this Reynolds number (0: off)").to(&Scene::ghia_re),
+        flag("metrics.poiseuille", false).doc("Poiseuille error of Basa et al. 2008 eqs. 36-39")
+            .to(&Scene::poiseuille),
+        flag("metrics.interface", false)
+            .doc("two phases: interface_NNNNNN.csv (0.5 contour of the smoothed phase), bubble and spike tips")
+            .to(&Scene::interface)},
+       ""},
+  };
+}
+
+std::vector<CatalogKey> build_catalog() {
+  std::vector<CatalogKey> out;
+  for (const Group& g : general_keys()) {
+    for (const Param& p : g.keys) {
+      out.push_back({p, g.owner});
+      if (p.family.empty()) continue;
+      const FamilyInfo* f = find_family(p.family);
+      if (!f) continue;
+      for (const Param& fp : f->params) out.push_back({fp, f->family});
+      for (const auto& e : f->entries)
+        for (const Param& ep : e.params) out.push_back({ep, f->family + ": " + e.name});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<FamilyInfo>& scene_families() {
+  static const std::vector<FamilyInfo> families = {
+      describe(scheme_registry()),       kernel_family(),
+      describe(viscosity_models()),      describe(pressure_gradients()),
+      describe(density_modes()),         describe(kernel_corrections()),
+      describe(equations_of_state()),    describe(density_corrections()),
+      describe(correction_solvers()),    describe(poisson_solvers()),
+      describe(wall_velocity_rules()),   describe(erk_tables()),
+      describe(imex_pairs()),
+  };
+  return families;
+}
+
+const FamilyInfo* find_family(const std::string& family) {
+  for (const auto& f : scene_families())
+    if (f.family == family) return &f;
+  return nullptr;
+}
+
+const std::vector<CatalogKey>& scene_catalog() {
+  static const std::vector<CatalogKey> catalog = build_catalog();
+  return catalog;
+}
+
+std::vector<std::string> scene_tables() {
+  std::vector<std::string> tables;
+  for (const auto& k : scene_catalog()) {
+    const std::string t = k.param.key.substr(0, k.param.key.find('.'));
+    if (std::find(tables.begin(), tables.end(), t) == tables.end()) tables.push_back(t);
+  }
+  return tables;
+}
+
+std::vector<std::string> keys_of_table(const std::string& table) {
+  std::vector<std::string> keys;
+  for (const auto& k : scene_catalog())
+    if (k.param.key.compare(0, table.size() + 1, table + ".") == 0) keys.push_back(k.param.key.substr(table.size() + 1));
+  return keys;
+}
+
+}  // namespace arksph

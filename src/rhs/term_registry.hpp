@@ -1,0 +1,23 @@
+// Registries of the right-hand-side families a scene selects by name (rhs/term_registries.cpp lists
+// the parts, one line each; every part is defined in its own file with its parameters and traits).
+#pragma once
+#include <memory>
+
+#include "core/param_builder.hpp"
+#include "core/registry.hpp"
+#include "core/scene.hpp"
+#include "rhs/term.hpp"
+
+namespace arksph {
+
+// Builds a part's term from the resolved scene (its parameters included).
+using TermFactory = std::unique_ptr<Term> (*)(const Scene&);
+
+const Registry<TermFactory>& viscosity_models();    // method.viscosity_model
+const Registry<TermFactory>& pressure_gradients();  // method.pressure_gradient
+const Registry<TermFactory>& kernel_corrections();  // method.kernel_correction ("none": no factory)
+// Selected by name, built by terms_from_scene with the resolved sound speed: no factories.
+const Registry<TermFactory>& equations_of_state();  // method.equation_of_state
+const Registry<TermFactory>& density_modes();       // method.density_mode
+
+}  // namespace arksph

@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "core/particle_order.hpp"
+#include "core/scheme.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -28,7 +29,8 @@ Model build_model(const Scene& scene) {
     for (int k = 0; k < scene.dimension; ++k) s2 += model.particles.init_vel[k][a] * model.particles.init_vel[k][a];
     u0max = std::max(u0max, std::sqrt(s2));
   }
-  if (scene.scheme == "wcsph") model.sound_speed = resolve_sound_speed(scene, u0max);
+  const SchemeTraits& scheme = scheme_traits(scene.scheme);
+  if (scheme.weakly_compressible) model.sound_speed = resolve_sound_speed(scene, u0max);
   // Ideal gas (Basa eq. 12): p = (gamma - 1) rho e; e(0) gives the sound speed sqrt(gamma p / rho) = c.
   if (scene.equation_of_state == "ideal_gas")
     model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));
@@ -53,9 +55,9 @@ Model build_model(const Scene& scene) {
     model.terms.push_back("integrator:erkstep:" + scene.integrator);
   }
   model.rhs = std::make_unique<RhsEvaluator>(scene, model.particles, std::move(kernel), std::move(terms));
-  if (scene.scheme == "isph" || scene.scheme == "isph-gpps") {
+  if (scheme.projection) {
     model.projection = std::make_unique<Projection>(scene, *model.rhs);
-    if (scene.scheme == "isph-gpps") {
+    if (scheme.grid) {
       const GridSpec g = gpps_grid(scene);
       model.terms.push_back("projection:gpps-klu:" + std::to_string(g.nx) + "x" + std::to_string(g.ny));
     } else {
@@ -63,7 +65,7 @@ Model build_model(const Scene& scene) {
     }
     if (scene.centre_positions) model.terms.push_back("projection:centred_positions");
     if (scene.projection_points == "stages") model.terms.push_back("projection:stages");
-    if (scene.density_correction == "pozorski_wawrenczuk") model.terms.push_back("correction:pozorski_wawrenczuk");
+    if (scene.density_correction != "none") model.terms.push_back("correction:" + scene.density_correction);
   }
   return model;
 }

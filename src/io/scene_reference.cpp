@@ -95,7 +95,14 @@ std::string scene_reference_markdown() {
     o << "\n### " << f.family << " (`" << f.key << "`)\n\n| name | description |\n|---|---|\n";
     for (const auto& e : f.entries) {
       std::string notes = e.summary;
-      if (!e.traits.schemes.empty()) notes += " (schemes: " + scene_schema::join(e.traits.schemes) + ")";
+      std::vector<std::string> traits;
+      if (!e.traits.schemes.empty()) traits.push_back("schemes: " + scene_schema::join(e.traits.schemes));
+      if (e.traits.can_be_implicit) traits.push_back("may be implicit (time.imex)");
+      if (e.traits.stencil_depth > 1) traits.push_back("stencil depth " + std::to_string(e.traits.stencil_depth));
+      if (!e.traits.state.empty()) traits.push_back("adds to the state: " + scene_schema::join(e.traits.state));
+      std::string list;
+      for (const auto& x : traits) list += (list.empty() ? "" : "; ") + x;
+      if (!list.empty()) notes += " (" + list + ")";
       o << "| `" << e.name << "` | " << cell(notes) << " |\n";
     }
   }

@@ -31,7 +31,7 @@ Part<TermFactory> equation_of_state_ideal_gas() {
           {number("method.gas_gamma", 1.4).in(above(1))
                .doc("ideal_gas: ratio of specific heats; e(0) is chosen so that the sound speed is method.sound_speed")
                .to(&Scene::gas_gamma)},
-          {.schemes = {"wcsph"}}};
+          {.schemes = {"wcsph"}, .state = {"energy"}}};
 }
 
 }  // namespace arksph

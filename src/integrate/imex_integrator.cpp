@@ -1,4 +1,5 @@
 #include "integrate/imex_integrator.hpp"
+#include "integrate/erk_integrator.hpp"
 #include "integrate/serial_vector.hpp"
 
 #include <arkode/arkode_arkstep.h>
@@ -9,8 +10,6 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 
 #include "core/errors.hpp"
 
@@ -37,17 +36,24 @@ const PairInfo& pair_info(const std::string& name) {
   throw InputError("unknown IMEX pair '" + name + "'");
 }
 
-std::string flag_name(int flag) {
-  char* name = ARKStepGetReturnFlagName(flag);
-  std::string out = name ? name : "unknown";
-  std::free(name);
-  return out;
-}
-
-int check(int flag, const char* call) {
-  if (flag < 0) throw NumericalFailure(std::string("ARKODE: ") + call + " failed with flag " + std::to_string(flag));
-  return flag;
-}
+// The ARKStep functions of ArkodeIntegrator.
+const ArkodeStepModule kArkStep = {"ARKStep",
+                                   ARKStepSetUserData,
+                                   ARKStepSetErrHandlerFn,
+                                   ARKStepSetMaxNumSteps,
+                                   ARKStepSStolerances,
+                                   ARKStepSetFixedStep,
+                                   ARKStepSetStabilityFn,
+                                   ARKStepSetCFLFraction,
+                                   ARKStepSetFixedStepBounds,
+                                   ARKStepSetInitStep,
+                                   ARKStepSetStopTime,
+                                   ARKStepEvolve,
+                                   ARKStepReset,
+                                   ARKStepGetCurrentStep,
+                                   ARKStepGetLastStep,
+                                   ARKStepGetReturnFlagName,
+                                   ARKStepFree};
 }  // namespace
 
 std::vector<std::string> imex_pair_names() {
@@ -61,111 +67,67 @@ std::string imex_pair_dirk_table(const std::string& pair) { return pair_info(pai
 std::string imex_pair_erk_table(const std::string& pair) { return pair_info(pair).erk; }
 
 ImexIntegrator::ImexIntegrator(ImexFunctions f, const std::vector<double>& y0, double t0, const ImexOptions& opt)
-    : f_(std::move(f)), stab_(opt.stability), linear_(opt.linear), n_(y0.size()), t_(t0), fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt) {
+    : ArkodeIntegrator(kArkStep, y0, t0, opt), f_(std::move(f)), linear_(opt.linear) {
   const PairInfo& pair = pair_info(opt.pair);
-  check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
-  const auto n = static_cast<sunindextype>(n_);
-  y_ = new_serial_vector(n, ctx_);
+  const auto n = static_cast<sunindextype>(size());
   frozen_ = new_serial_vector(n, ctx_);
-  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
-  mem_ = ARKStepCreate(&ImexIntegrator::fe_cb, &ImexIntegrator::fi_cb, t0, y_, ctx_);
-  if (!mem_) throw NumericalFailure("ARKODE: ARKStepCreate failed");
-  check(ARKStepSetUserData(mem_, this), "ARKStepSetUserData");
-  check(ARKStepSetErrHandlerFn(
-            mem_,
-            [](int, const char*, const char* function, char* msg, void* self) {
-              std::string m = std::string(function) + ": " + msg;
-              std::replace(m.begin(), m.end(), '\n', ' ');
-              static_cast<ImexIntegrator*>(self)->last_message_ = m;
-            },
-            this),
-        "ARKStepSetErrHandlerFn");
-  check(ARKStepSetTableName(mem_, pair.dirk, pair.erk), "ARKStepSetTableName");
-  // Newton matrix: CSR, KLU with AMD ordering (TOOLCHAIN.md §2); the size grows in the linsys callback.
+  adopt(ARKStepCreate(&ImexIntegrator::fe_cb, &ImexIntegrator::fi_cb, t0, y_, ctx_));
+  check(ARKStepSetTableName(mem_, pair.dirk, pair.erk), "SetTableName");
+  // Newton matrix: CSR, KLU with AMD ordering; the size grows in the linsys callback.
   A_ = SUNSparseMatrix(n, n, std::max<sunindextype>(n, 1), CSR_MAT, ctx_);
   ls_ = SUNLinSol_KLU(y_, A_, ctx_);
   if (!A_ || !ls_) throw NumericalFailure("SUNDIALS: cannot create the sparse matrix or KLU solver");
-  check(SUNLinSol_KLUSetOrdering(ls_, 0), "SUNLinSol_KLUSetOrdering");
-  check(ARKStepSetLinearSolver(mem_, ls_, A_), "ARKStepSetLinearSolver");
-  check(ARKStepSetLinSysFn(mem_, &ImexIntegrator::linsys_cb), "ARKStepSetLinSysFn");
-  if (opt.linear) check(ARKStepSetLinear(mem_, 1), "ARKStepSetLinear");  // 1: J changes with the positions
+  if (SUNLinSol_KLUSetOrdering(ls_, 0) < 0) throw NumericalFailure("SUNDIALS: SUNLinSol_KLUSetOrdering failed");
+  check(ARKStepSetLinearSolver(mem_, ls_, A_), "SetLinearSolver");
+  check(ARKStepSetLinSysFn(mem_, &ImexIntegrator::linsys_cb), "SetLinSysFn");
+  if (opt.linear) check(ARKStepSetLinear(mem_, 1), "SetLinear");  // 1: J changes with the positions
   // The SUNDIALS 6.4.1 FSAL bug of ERKStep (erk_integrator.hpp) does not show here: the IMEX order
   // study (cases/studies/order_imex.toml) measures the same orders, to 4 digits, with and without
   // ERKStep's workaround (a no-op post-processing step function), so none is installed.
-  check(ARKStepSetMaxNumSteps(mem_, opt.max_steps), "ARKStepSetMaxNumSteps");
   // The tolerances set the error control (adaptive) and, in both modes, the Newton tolerance.
-  check(ARKStepSStolerances(mem_, opt.rtol, opt.atol), "ARKStepSStolerances");
-  if (opt.fixed_dt > 0) {
-    check(ARKStepSetFixedStep(mem_, opt.fixed_dt), "ARKStepSetFixedStep");
-  } else {
-    if (stab_) {
-      check(ARKStepSetStabilityFn(mem_, &ImexIntegrator::stab_cb, this), "ARKStepSetStabilityFn");
-      check(ARKStepSetCFLFraction(mem_, 0.99), "ARKStepSetCFLFraction");  // as ErkIntegrator
-      check(ARKStepSetFixedStepBounds(mem_, 1.0, 1.0), "ARKStepSetFixedStepBounds");
-    }
-    if (opt.initial_dt > 0) check(ARKStepSetInitStep(mem_, opt.initial_dt), "ARKStepSetInitStep");
-  }
+  apply_step_options(opt, true);
 }
 
 ImexIntegrator::~ImexIntegrator() {
-  if (mem_) ARKStepFree(&mem_);
+  free_memory();  // ARKStep first: it refers to the linear solver and the matrix
   if (ls_) SUNLinSolFree(ls_);
   if (A_) SUNMatDestroy(A_);
   if (frozen_) N_VDestroy(frozen_);
-  if (y_) N_VDestroy(y_);
-  if (ctx_) SUNContext_Free(&ctx_);
 }
 
-int ImexIntegrator::evaluate(const RhsFunction& f, double t, N_Vector y, N_Vector ydot) {
-  f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
-  const double* d = N_VGetArrayPointer(ydot);
-  for (std::size_t i = 0; i < n_; ++i)
-    if (!std::isfinite(d[i])) return 1;  // recoverable: ARKODE retries with a smaller step
-  return 0;
+int ImexIntegrator::fe_cb(double t, N_Vector y, N_Vector ydot, void* user_data) noexcept {
+  auto& me = self<ImexIntegrator>(user_data);
+  return me.evaluate_rhs(me.f_.explicit_rhs, t, y, ydot);
 }
 
-int ImexIntegrator::fe_cb(double t, N_Vector y, N_Vector ydot, void* self) {
-  auto* me = static_cast<ImexIntegrator*>(self);
-  return me->evaluate(me->f_.explicit_rhs, t, y, ydot);
+int ImexIntegrator::fi_cb(double t, N_Vector y, N_Vector ydot, void* user_data) noexcept {
+  auto& me = self<ImexIntegrator>(user_data);
+  return me.evaluate_rhs(me.f_.implicit_rhs, t, y, ydot);
 }
 
-int ImexIntegrator::fi_cb(double t, N_Vector y, N_Vector ydot, void* self) {
-  auto* me = static_cast<ImexIntegrator*>(self);
-  return me->evaluate(me->f_.implicit_rhs, t, y, ydot);
-}
-
-int ImexIntegrator::stab_cb(N_Vector y, double t, double* hstab, void* self) {
-  auto* me = static_cast<ImexIntegrator*>(self);
-  *hstab = me->stab_(t, N_VGetArrayPointer(y)) / 0.99;
-  return 0;
+int ImexIntegrator::linsys_cb(double t, N_Vector y, N_Vector, SUNMatrix A, SUNMatrix, int jok, int* jcur, double gamma,
+                              void* user_data, N_Vector, N_Vector, N_Vector) noexcept {
+  auto& me = self<ImexIntegrator>(user_data);
+  return me.guarded([&] { return me.newton_matrix(t, y, A, jok, jcur, gamma); });
 }
 
 // A = I - gamma J. J is evaluated at the stage's frozen state zpred + sdata: on every row where f_I
 // vanishes the stage equation z - gamma f_I(z) = zpred + sdata fixes z exactly.
 // Without `linear`, ARKODE's hint jok (J recent enough) is honoured: the last J with the new gamma.
-int ImexIntegrator::linsys_cb(double t, N_Vector y, N_Vector, SUNMatrix A, SUNMatrix, int jok, int* jcur, double gamma,
-                              void* self, N_Vector, N_Vector, N_Vector) {
-  auto* me = static_cast<ImexIntegrator*>(self);
-  if (!me->linear_ && jok && me->last_J_) return me->fill_newton_matrix(*me->last_J_, A, gamma, jcur, false);
+int ImexIntegrator::newton_matrix(double t, N_Vector y, SUNMatrix A, int jok, int* jcur, double gamma) {
+  if (!linear_ && jok && last_J_) return fill_newton_matrix(*last_J_, A, gamma, jcur, false);
   double tcur = t, gam = gamma;
   N_Vector zpred = nullptr, z = nullptr, Fi = nullptr, sdata = nullptr;
   void* ud = nullptr;
   const double* frozen = N_VGetArrayPointer(y);
-  if (ARKStepGetNonlinearSystemData(me->mem_, &tcur, &zpred, &z, &Fi, &gam, &sdata, &ud) == ARK_SUCCESS && zpred &&
-      sdata) {
-    N_VLinearSum(1.0, zpred, 1.0, sdata, me->frozen_);
-    frozen = N_VGetArrayPointer(me->frozen_);
+  if (ARKStepGetNonlinearSystemData(mem_, &tcur, &zpred, &z, &Fi, &gam, &sdata, &ud) == ARK_SUCCESS && zpred && sdata) {
+    N_VLinearSum(1.0, zpred, 1.0, sdata, frozen_);
+    frozen = N_VGetArrayPointer(frozen_);
   }
-  const SparseCsr* J = nullptr;
-  try {
-    J = &me->f_.jacobian(t, frozen);
-  } catch (const std::exception& e) {
-    me->last_message_ = e.what();
-    return -1;
-  }
-  ++me->jacobians_;
-  me->last_J_ = J;
-  return me->fill_newton_matrix(*J, A, gamma, jcur, true);
+  const SparseCsr& J = f_.jacobian(t, frozen);
+  ++jacobians_;
+  last_J_ = &J;
+  return fill_newton_matrix(J, A, gamma, jcur, true);
 }
 
 int ImexIntegrator::fill_newton_matrix(const SparseCsr& Jr, SUNMatrix A, double gamma, int* jcur, bool fresh) {
@@ -193,68 +155,13 @@ int ImexIntegrator::fill_newton_matrix(const SparseCsr& Jr, SUNMatrix A, double 
   return 0;
 }
 
-void ImexIntegrator::fail_if(int flag, const char* call) const {
-  if (flag < 0)
-    throw NumericalFailure(std::string("ARKODE: ") + call + " failed at t = " + std::to_string(t_) + " with flag " +
-                           std::to_string(flag) + " (" + flag_name(flag) + "; " + last_message_ + ")");
-}
-
-double ImexIntegrator::evolve_to(double tout) {
-  if (fixed_dt_ > 0) {
-    while (t_ < tout) step(tout);
-    return t_;
-  }
-  check(ARKStepSetStopTime(mem_, tout), "ARKStepSetStopTime");
-  fail_if(ARKStepEvolve(mem_, tout, y_, &t_, ARK_NORMAL), "ARKStepEvolve");
-  return t_;
-}
-
-double ImexIntegrator::step(double tstop) {
-  if (fixed_dt_ > 0) {  // as ErkIntegrator::step: the last step is shortened to land on tstop
-    const double remaining = tstop - t_;
-    const double h = remaining <= fixed_dt_ * (1 + 1e-10) ? remaining : fixed_dt_;
-    if (h != current_h_) {
-      check(ARKStepSetFixedStep(mem_, h), "ARKStepSetFixedStep");
-      current_h_ = h;
-    }
-    fail_if(ARKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP), "ARKStepEvolve");
-    if (std::abs(tstop - t_) <= 1e-12 * std::max(1.0, std::abs(tstop))) t_ = tstop;
-    return t_;
-  }
-  check(ARKStepSetStopTime(mem_, tstop), "ARKStepSetStopTime");
-  fail_if(ARKStepEvolve(mem_, tstop, y_, &t_, ARK_ONE_STEP), "ARKStepEvolve");
-  return t_;
-}
-
-double* ImexIntegrator::state() { return N_VGetArrayPointer(y_); }
-
-void ImexIntegrator::reset(double t) {
-  check(ARKStepReset(mem_, t, y_), "ARKStepReset");
-  t_ = t;
-}
-
-void ImexIntegrator::restart_at(double t, double h) {
-  const ErkStats total = stats();
-  check(ARKStepReInit(mem_, &ImexIntegrator::fe_cb, &ImexIntegrator::fi_cb, t, y_), "ARKStepReInit");
-  t_ = t;
-  offset_ = total;
+void ImexIntegrator::reinit(double t) {
+  check(ARKStepReInit(mem_, &ImexIntegrator::fe_cb, &ImexIntegrator::fi_cb, t, y_), "ReInit");
   symbolic_ = jacobians_ = 0;
   last_J_ = nullptr;
-  if (fixed_dt_ > 0) {
-    check(ARKStepSetFixedStep(mem_, fixed_dt_), "ARKStepSetFixedStep");
-    current_h_ = fixed_dt_;
-  } else if (h > 0) {
-    check(ARKStepSetInitStep(mem_, h), "ARKStepSetInitStep");
-  }
 }
 
-double ImexIntegrator::next_step() const {
-  double h = 0;
-  ARKStepGetCurrentStep(mem_, &h);
-  return h;
-}
-
-ErkStats ImexIntegrator::stats() const {
+ErkStats ImexIntegrator::module_stats() const {
   ErkStats s;
   long nst_stab = 0, nacc = 0, natt = 0, nfe = 0, nfi = 0, nls = 0, netf = 0, nst = 0;
   ARKStepGetTimestepperStats(mem_, &nst_stab, &nacc, &natt, &nfe, &nfi, &nls, &netf);
@@ -262,18 +169,16 @@ ErkStats ImexIntegrator::stats() const {
   long niters = 0, nfails = 0;
   ARKStepGetNumNonlinSolvIters(mem_, &niters);
   ARKStepGetNumNonlinSolvConvFails(mem_, &nfails);
-  s.steps = nst + offset_.steps;
-  s.rhs_evals = nfe + offset_.rhs_evals;
-  s.implicit_rhs_evals = nfi + offset_.implicit_rhs_evals;
-  s.attempts = natt + offset_.attempts;
-  s.error_test_fails = netf + offset_.error_test_fails;
-  s.linear_setups = nls + offset_.linear_setups;
-  s.newton_iters = niters + offset_.newton_iters;
-  s.newton_fails = nfails + offset_.newton_fails;
-  s.jacobian_evals = jacobians_ + offset_.jacobian_evals;
-  s.symbolic_analyses = symbolic_ + offset_.symbolic_analyses;
-  ARKStepGetLastStep(mem_, &s.last_step);
-  if (s.last_step == 0) s.last_step = offset_.last_step;
+  s.steps = nst;
+  s.rhs_evals = nfe;
+  s.implicit_rhs_evals = nfi;
+  s.attempts = natt;
+  s.error_test_fails = netf;
+  s.linear_setups = nls;
+  s.newton_iters = niters;
+  s.newton_fails = nfails;
+  s.jacobian_evals = jacobians_;
+  s.symbolic_analyses = symbolic_;
   return s;
 }
 

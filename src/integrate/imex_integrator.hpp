@@ -1,5 +1,6 @@
-// RAII wrapper of SUNDIALS 6.4 ARKStep as an additive (IMEX) Runge-Kutta method: y' = f_E(t, y) +
-// f_I(t, y), f_E explicit (ERK table of the pair), f_I implicit (ESDIRK table of the pair). The
+// SUNDIALS 6.4 ARKStep as an additive (IMEX) Runge-Kutta method: y' = f_E(t, y) + f_I(t, y), f_E
+// explicit (ERK table of the pair), f_I implicit (ESDIRK table of the pair). Stepping, restart,
+// counters and callback exceptions are those of ArkodeIntegrator (arkode_integrator.hpp). The
 // implicit stages z = a + gamma f_I(z) are solved by ARKODE's Newton iteration with SUNLinSol_KLU on
 // the sparse Newton matrix M = I - gamma J, J = df_I/dy given by the caller in CSR form.
 //
@@ -8,20 +9,18 @@
 // they are during a stage solve (their f_I rows vanish). J is therefore evaluated at the stage's
 // frozen state (ARKStepGetNonlinearSystemData: zpred + sdata on those rows), and with `linear`
 // (ARKStepSetLinear, time dependent) one Newton iteration per stage is exact. The KLU symbolic
-// analysis is kept while the sparsity pattern of J is unchanged (SUNLinSol_KLUReInit when it changes,
-// TOOLCHAIN.md §2).
+// analysis is kept while the sparsity pattern of J is unchanged (SUNLinSol_KLUReInit when it changes).
 #pragma once
 #include <functional>
 #include <string>
 #include <vector>
 
-#include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 #include <sundials/sundials_nvector.h>
 
-#include "integrate/erk_integrator.hpp"
-#include "integrate/time_integrator.hpp"
+#include "integrate/arkode_integrator.hpp"
+#include "integrate/step_options.hpp"
 
 namespace arksph {
 
@@ -41,13 +40,9 @@ struct ImexFunctions {
   std::function<const SparseCsr&(double t, const double* y)> jacobian;
 };
 
-struct ImexOptions {
+// The step control (StepOptions::stability: the explicit part's limits), the pair and the Newton mode.
+struct ImexOptions : StepOptions {
   std::string pair = "ARK324L2SA";  // ARKODE_<pair>_DIRK_* with ARKODE_<pair>_ERK_*
-  double fixed_dt = 0;              // > 0: fixed step; 0: adaptive
-  double rtol = 1e-4, atol = 1e-8;
-  long max_steps = 100000000;
-  StabilityFunction stability;  // adaptive mode: h <= stability(t, y) (explicit part's limits)
-  double initial_dt = 0;
   bool linear = true;  // f_I linear at frozen positions: ARKStepSetLinear, one Newton iteration per stage
 };
 
@@ -57,45 +52,27 @@ int imex_pair_order(const std::string& pair);
 std::string imex_pair_dirk_table(const std::string& pair);
 std::string imex_pair_erk_table(const std::string& pair);
 
-class ImexIntegrator final : public TimeIntegrator {
+class ImexIntegrator final : public ArkodeIntegrator {
  public:
   ImexIntegrator(ImexFunctions f, const std::vector<double>& y0, double t0, const ImexOptions& opt);
   ~ImexIntegrator() override;
-  ImexIntegrator(const ImexIntegrator&) = delete;
-  ImexIntegrator& operator=(const ImexIntegrator&) = delete;
-
-  double evolve_to(double tout) override;
-  double step(double tstop) override;
-  double* state() override;
-  void reset(double t) override;
-  std::size_t size() const override { return n_; }
-  ErkStats stats() const override;
-  void restart_at(double t, double h) override;
-  double next_step() const override;
 
  private:
-  static int fe_cb(double t, N_Vector y, N_Vector ydot, void* self);
-  static int fi_cb(double t, N_Vector y, N_Vector ydot, void* self);
-  static int stab_cb(N_Vector y, double t, double* hstab, void* self);
+  static int fe_cb(double t, N_Vector y, N_Vector ydot, void* user_data) noexcept;
+  static int fi_cb(double t, N_Vector y, N_Vector ydot, void* user_data) noexcept;
   static int linsys_cb(double t, N_Vector y, N_Vector fy, SUNMatrix A, SUNMatrix M, int jok, int* jcur,
-                       double gamma, void* self, N_Vector, N_Vector, N_Vector);
-  int evaluate(const RhsFunction& f, double t, N_Vector y, N_Vector ydot);
+                       double gamma, void* user_data, N_Vector, N_Vector, N_Vector) noexcept;
+  int newton_matrix(double t, N_Vector y, SUNMatrix A, int jok, int* jcur, double gamma);
   int fill_newton_matrix(const SparseCsr& J, SUNMatrix A, double gamma, int* jcur, bool fresh);
-  void fail_if(int flag, const char* call) const;
+  void reinit(double t) override;
+  ErkStats module_stats() const override;
   ImexFunctions f_;
-  StabilityFunction stab_;
   bool linear_ = true;
   const SparseCsr* last_J_ = nullptr;  // the last J handed over (stays valid: owned by the caller)
-  SUNContext ctx_ = nullptr;
-  N_Vector y_ = nullptr, frozen_ = nullptr;
+  N_Vector frozen_ = nullptr;
   SUNMatrix A_ = nullptr;
   SUNLinearSolver ls_ = nullptr;
-  void* mem_ = nullptr;
-  std::size_t n_;
-  double t_;
-  double fixed_dt_ = 0, current_h_ = 0;
   long pattern_version_ = -1, symbolic_ = 0, jacobians_ = 0;
-  std::string last_message_;
 };
 
 }  // namespace arksph

@@ -1,4 +1,5 @@
 #include "projection/correction_kinsol.hpp"
+#include "integrate/callback_guard.hpp"
 #include "integrate/serial_vector.hpp"
 
 #include <kinsol/kinsol.h>
@@ -7,6 +8,7 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <cmath>
+#include <exception>
 #include <numeric>
 #include <string>
 
@@ -25,6 +27,7 @@ struct Problem {
   SparseMatrix A;               // pinned, scaled Laplacian at r~
   SparseMatrix Gx, Gy;          // difference-form gradient at r~ (ghosts map to their source)
   std::vector<double> volume, rho0;
+  std::exception_ptr error;     // thrown in a KINSOL callback, rethrown after KINSol
 };
 
 // s_a - mean s at the positions shifted by p.
@@ -52,24 +55,25 @@ void residual(Problem& P, const double* p, double* F) {
   F[0] = -p[0];
 }
 
-int kin_residual(N_Vector u, N_Vector fval, void* data) {
-  residual(*static_cast<Problem*>(data), N_VGetArrayPointer(u), N_VGetArrayPointer(fval));
-  return 0;
+int kin_residual(N_Vector u, N_Vector fval, void* data) noexcept {
+  Problem& P = *static_cast<Problem*>(data);
+  return guarded_callback(P.error, [&] { residual(P, N_VGetArrayPointer(u), N_VGetArrayPointer(fval)); });
 }
 
 // J = -A in CSR (A is symmetric, so its CSC arrays are the CSR arrays of A^T = A).
-int kin_jacobian(N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
-  const Problem& P = *static_cast<Problem*>(data);
-  const SparseMatrix& A = P.A;
-  sunindextype* ptr = SM_INDEXPTRS_S(J);
-  sunindextype* idx = SM_INDEXVALS_S(J);
-  sunrealtype* val = SM_DATA_S(J);
-  for (long j = 0; j <= A.outerSize(); ++j) ptr[j] = A.outerIndexPtr()[j];
-  for (long k = 0; k < A.nonZeros(); ++k) {
-    idx[k] = A.innerIndexPtr()[k];
-    val[k] = -A.valuePtr()[k];
-  }
-  return 0;
+int kin_jacobian(N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) noexcept {
+  Problem& P = *static_cast<Problem*>(data);
+  return guarded_callback(P.error, [&] {
+    const SparseMatrix& A = P.A;
+    sunindextype* ptr = SM_INDEXPTRS_S(J);
+    sunindextype* idx = SM_INDEXVALS_S(J);
+    sunrealtype* val = SM_DATA_S(J);
+    for (long j = 0; j <= A.outerSize(); ++j) ptr[j] = A.outerIndexPtr()[j];
+    for (long k = 0; k < A.nonZeros(); ++k) {
+      idx[k] = A.innerIndexPtr()[k];
+      val[k] = -A.valuePtr()[k];
+    }
+  });
 }
 }  // namespace
 
@@ -130,8 +134,12 @@ KinsolCorrectionResult correct_density_kinsol(RhsEvaluator& rhs, double t, doubl
   KINSetFuncNormTol(kin, ftol);
   KINSetMaxNewtonStep(kin, 1e6);
   KINSetPrintLevel(kin, 0);
-  KINSetErrHandlerFn(kin, [](int, const char*, const char*, char*, void*) {}, nullptr);
+  KINSetErrHandlerFn(kin, [](int, const char*, const char*, char*, void*) noexcept {}, nullptr);
   res.flag = KINSol(kin, u, KIN_NONE, scale, scale);
+  if (P.error) {  // a callback threw: its exception, not KINSOL's flag for it
+    cleanup();
+    rethrow_callback_error(P.error);
+  }
   long nni = 0, nfe = 0;
   KINGetNumNonlinSolvIters(kin, &nni);
   KINGetNumFuncEvals(kin, &nfe);

@@ -12,13 +12,8 @@ TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOp
   }
   ts.split = std::make_unique<ViscousSplit>(scene, rhs);
   ImexOptions io;
+  static_cast<StepOptions&>(io) = eo;  // the step control of the run
   io.pair = scene.imex_pair;
-  io.fixed_dt = eo.fixed_dt;
-  io.rtol = eo.rtol;
-  io.atol = eo.atol;
-  io.max_steps = eo.max_steps;
-  io.stability = eo.stability;
-  io.initial_dt = eo.initial_dt;
   io.linear = scene.imex_linear;
   ts.integrator = std::make_unique<ImexIntegrator>(ts.split->functions(), y0, t0, io);
   return ts;

@@ -1,4 +1,4 @@
-// arksph command line: run, list, help. Exit codes (INTERFACE.md): 0 ok, 2 bad input, 3 numerical failure.
+// arksph command line: run, list, help. Exit codes: 0 ok, 2 bad input, 3 numerical failure.
 #include <cstdio>
 #include <cstring>
 #include <exception>

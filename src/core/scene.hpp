@@ -1,4 +1,4 @@
-// The validated, fully resolved scene: every key of INTERFACE.md with its default filled in.
+// The validated, fully resolved scene: every key of docs/scene-reference.md with its default filled in.
 // Produced by io/scene_reader (TOML + --set overrides), consumed by setup and the run loop.
 #pragma once
 #include <array>

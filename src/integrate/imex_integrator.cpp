@@ -81,7 +81,7 @@ ImexIntegrator::ImexIntegrator(ImexFunctions f, const std::vector<double>& y0, d
             this),
         "ARKStepSetErrHandlerFn");
   check(ARKStepSetTableName(mem_, pair.dirk, pair.erk), "ARKStepSetTableName");
-  // Newton matrix: CSR, KLU with AMD ordering (TOOLCHAIN.md §2); the size grows in the linsys callback.
+  // Newton matrix: CSR, KLU with AMD ordering (faster than the default COLAMD); the size grows in the linsys callback.
   A_ = SUNSparseMatrix(n, n, std::max<sunindextype>(n, 1), CSR_MAT, ctx_);
   ls_ = SUNLinSol_KLU(y_, A_, ctx_);
   if (!A_ || !ls_) throw NumericalFailure("SUNDIALS: cannot create the sparse matrix or KLU solver");

@@ -8,8 +8,8 @@
 // they are during a stage solve (their f_I rows vanish). J is therefore evaluated at the stage's
 // frozen state (ARKStepGetNonlinearSystemData: zpred + sdata on those rows), and with `linear`
 // (ARKStepSetLinear, time dependent) one Newton iteration per stage is exact. The KLU symbolic
-// analysis is kept while the sparsity pattern of J is unchanged (SUNLinSol_KLUReInit when it changes,
-// TOOLCHAIN.md §2).
+// analysis is kept while the sparsity pattern of J is unchanged (SUNLinSol_KLUReInit when it changes;
+// without it ARKODE reports no error but the Newton iterations fail).
 #pragma once
 #include <functional>
 #include <string>

@@ -1,5 +1,5 @@
 // Scene reader: TOML scene file (+ --set overrides) -> validated, fully resolved Scene.
-// The file format is INTERFACE.md "Scene file"; every key is commented in default_scene_toml().
+// The file format is docs/scene-reference.md; every key is commented in default_scene_toml().
 //
 // Every problem throws InputError with one line "<source>: <dotted.key>: <reason>" (a TOML syntax
 // error: "<source>:<line>:<col>: syntax error: <description>"; a problem caused by an override names

@@ -336,7 +336,7 @@ void read_time_output(const Section& root, Scene& s) {
   t.require(s.atol > 0, "atol", "> 0", s.atol);
   s.max_steps = t.integer("max_steps", s.max_steps);
   t.require(s.max_steps >= 1, "max_steps", ">= 1", static_cast<double>(s.max_steps));
-  // IMEX: ARKStep with the viscous term implicit (app README "Stiff viscosity"); time.integrator is
+  // IMEX: ARKStep with the viscous term implicit (docs/methods/imex.md); time.integrator is
   // then unused, the pair names both tables
   s.imex = t.boolean("imex", s.imex);
   s.imex_pair = t.registered("imex_pair", "imex_pair", s.imex_pair);

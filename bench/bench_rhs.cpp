@@ -1,6 +1,6 @@
 // The WCSPH right-hand side: the whole f(t, y) (steady state between neighbour rebuilds, as in a
 // running simulation) and each physical term on its own. items_per_second of BM_RhsEval is the
-// particle-evaluation rate of issue 8 (target >= 5e6 on 2 threads with about 50 neighbours).
+// particle-evaluation rate (target >= 5e6 on 2 threads with about 50 neighbours).
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.hpp"

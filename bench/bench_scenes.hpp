@@ -1,5 +1,5 @@
 // Scenes shared by the benchmarks: a doubly periodic Taylor-Green box of n x n particles, Wendland
-// kernel with h = 2 dx (about 50 neighbours, the setting of the particle-evaluation target),
+// kernel with h = 2 dx (about 50 neighbours, the setting of the 5e6 evaluations/s target),
 // WCSPH or ISPH, and a fully evaluated model on it.
 #pragma once
 #include <string>

@@ -2,8 +2,8 @@
 """Cavity Re = 100, 50 x 50, to t = 10: arksph (wcsph, isph) and PySPH (Debian's python3-pysph, its
 cavity example, TVF scheme) in one go on this machine. Prints wall time to t = 10 and Ghia L-infinity
 of u and v for each, and the time ratios. Every run's Ghia error is computed here, from its final
-particles, by one common interpolation (Shepard-normalised Wendland C2, h = 1.3 dx, the one of
-docs/PEERS.md), over Ghia's interior centreline points (bench/ghia/*.csv).
+particles, by one common interpolation (Shepard-normalised Wendland C2, h = 1.3 dx, the one the
+published peer-code cavity figures use), over Ghia's interior centreline points (bench/ghia/*.csv).
 
 Usage: bench/compare_pysph.py [--build build] [--out bench-runs] [--threads 2] [--tf 10]
 Needs: build/arksph, python3-numpy, python3-pysph (apt-get install python3-pysph), vtk not needed.
@@ -109,7 +109,7 @@ def run_pysph(args):
     os.makedirs(fix, exist_ok=True)
     os.makedirs(os.path.join(args.out, "pysph-home"), exist_ok=True)
     with open(os.path.join(fix, "sitecustomize.py"), "w") as f:
-        f.write("from mpi4py import MPI\n")  # works around a PySPH 1.0b1 MPI-init bug (PEERS.md)
+        f.write("from mpi4py import MPI\n")  # works around a PySPH 1.0b1 MPI-init bug (mpi4py imported first)
     # Passive OpenMP waiting as arksph uses by default: fair on a shared machine.
     env = dict(os.environ, OMP_NUM_THREADS=str(args.threads), OMP_WAIT_POLICY="PASSIVE", PYTHONPATH=fix,
                HOME=os.path.join(args.out, "pysph-home"))

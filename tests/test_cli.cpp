@@ -144,7 +144,7 @@ TEST_CASE("cli: a short run of the default scene writes every output file") {
   CHECK(count_lines(read_file(dir / "timeseries.csv")) == 4);
 }
 
-// Regression against the analytic start-up solution (Basa et al. 2008 eqs. 36-39): the issue's
+// Regression against the analytic start-up solution (Basa et al. 2008 eqs. 36-39): the project's
 // acceptance bound, eps <= 2% for 0.5 <= t* <= 2, on the case as shipped. Measured: 1.82%.
 TEST_CASE("cases: Poiseuille start-up at Re = 0.5 stays within 2% of the series solution") {
   const fs::path dir = fs::temp_directory_path() / "arksph_poiseuille";

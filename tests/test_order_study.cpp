@@ -26,7 +26,7 @@ TEST_CASE("order study: the log-log least-squares slope of an exact power law is
 }
 
 // The study of cases/studies/order_wcsph.toml, shortened to t = 0.02 (10 to 80 steps) to stay fast.
-// The tolerance 0.3 is the issue's acceptance threshold; it leaves room for the pre-asymptotic
+// The tolerance 0.3 is the project's acceptance threshold; it leaves room for the pre-asymptotic
 // regime of three step sizes near the CFL limit (measured at t = 0.05: 1.195, 1.916, 3.053, 3.895,
 // 5.120, and ARK324 3.0). Without the FSAL workaround ARK324 measures 2.0 (test_wcsph) and fails here.
 TEST_CASE("order study: six explicit tables on the Taylor-Green vortex reach their nominal orders 1-5") {

@@ -154,7 +154,7 @@ void check_vtp_round_trip(int dim) {
 
 }  // namespace
 
-TEST_CASE("output: the field table lists the INTERFACE.md arrays and renders as markdown") {
+TEST_CASE("output: the field table lists the documented point-data arrays and renders as markdown") {
   std::vector<std::string> names;
   for (const auto& f : kOutputFields) names.emplace_back(f.name);
   CHECK(names == std::vector<std::string>{"velocity", "pressure", "density", "summation_density", "mass", "id", "phase"});

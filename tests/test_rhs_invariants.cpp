@@ -1,4 +1,4 @@
-// Invariants of the fast right-hand side (issue 8): the OpenMP gather loops give bit-identical
+// Invariants of the fast right-hand side: the OpenMP gather loops give bit-identical
 // results for 1 and 2 threads (no atomics, no reduction order that depends on the thread count),
 // and f(t, y) allocates nothing between neighbour rebuilds.
 #include <omp.h>

@@ -25,12 +25,12 @@ const char* kBatchUsage =
 
 const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
-    "  Temporal order of ARKODE tables on one scene at fixed steps (see README, \"Order study\").\n"
+    "  Temporal order of ARKODE tables on one scene at fixed steps (docs/user-guide.md, \"Order study\").\n"
     "  Writes <out>/order_errors.csv and <out>/order_fit.csv; exit 0 if every table is within the\n"
     "  tolerance of its nominal order, 4 if one is flagged, 2 for bad input.\n"
     "usage: arksph study work-precision STUDY.toml [--out DIR] [--jobs N] [--set KEY=VALUE ...] [--quiet]\n"
-    "  Error against wall time for schemes x resolutions (see README, \"Work-precision\"). Writes\n"
-    "  <out>/work_precision.csv (and .png), prints which scheme reaches the target error soonest;\n"
+    "  Error against wall time for schemes x resolutions (docs/user-guide.md, \"Work-precision study\").\n"
+    "  Writes <out>/work_precision.csv (and .png), prints which scheme reaches the target error soonest;\n"
     "  exit 0, 3 if the reference run failed or no run finished, 2 for bad input.\n";
 
 int parse_int(const std::string& opt, const std::string& v) {

@@ -1,4 +1,4 @@
-// Error types that map to the exit codes of INTERFACE.md.
+// Error types that map to the exit codes (2 bad input, 3 numerical failure).
 #pragma once
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-// The validated, fully resolved scene: every key of INTERFACE.md with its default filled in.
+// The validated, fully resolved scene: every key of docs/scene-reference.md with its default filled in.
 // Produced by io/scene_reader (TOML + --set overrides), consumed by setup and the run loop.
 #pragma once
 #include <array>
@@ -62,7 +62,7 @@ struct Scene {
   std::string viscosity_model = "morris";
   std::string kernel_correction = "none";  // Basa et al. 2008 §4: "none" | "shepard" (eqs. 21-23) | "bonet_lok" (eqs. 24-26)
   bool pressure_reduction = false;     // Basa et al. 2008 eq. 20: local average pressure subtracted in the pressure gradient
-  double sound_speed = 0.0;            // 0: default 10 * reference speed (see README)
+  double sound_speed = 0.0;            // 0: default 10 * reference speed (docs/scene-reference.md)
   double tait_gamma = 7.0;             // C&R eq. 7
   std::string equation_of_state = "tait";  // "tait" (Basa eq. 13) | "ideal_gas" (Basa eq. 12 with the energy equation 14)
   double gas_gamma = 1.4;              // ideal_gas: p = (gamma - 1) rho e; e(0) chosen so that sqrt(gamma p / rho) = c
@@ -76,7 +76,7 @@ struct Scene {
   bool force_sweep = true;  // the per-particle force terms share one neighbourhood gather
   std::string neighbor_storage = "pairs";        // "pairs" (W, F stored) | "candidates" (kernel on the fly)
   double ppe_pressure_offset = 0.0;              // isph: constant added to P after the level (background pressure)
-  std::string ppe_solver = "auto";     // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (README)
+  std::string ppe_solver = "auto";     // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (docs/methods/isph.md)
   double ppe_tolerance = 1e-10;        // isph, cg: relative residual
   double gpps_spacing = 0.0;           // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing
   double gpps_volume_relaxation = 0.0; // isph-gpps: beta of the cell-volume source term (0: off, Szewc's GPPS)

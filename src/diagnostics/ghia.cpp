@@ -1,6 +1,6 @@
 // Ghia, Ghia & Shin 1982, J. Comput. Phys. 48:387-411, Tables I and II, interior points only
-// (the wall and lid rows are boundary values). Copied from ../shared/reference/ghia_*.csv, which
-// records its provenance (majority of five public copies).
+// (the wall and lid rows are boundary values). Each value is the majority of five public
+// copies of the tables.
 #include "diagnostics/ghia.hpp"
 
 #include <cmath>

@@ -19,7 +19,7 @@ struct GhiaErrors {
 void shepard_velocity(const FluidFields& f, const Kernel& w, double px, double py, double& u, double& v);
 
 // The interpolation used for Ghia comparisons: Wendland C2 with h = 1.3 dx over fluid particles, the
-// common choice of the peer measurements in PEERS.md, so that the figures compare directly.
+// interpolation that published peer-code cavity figures were measured with, so that they compare directly.
 Kernel ghia_interpolation_kernel(double dx);
 
 // Compares with Ghia's table at Re (100 or 1000) for a cavity [x0, x0 + L] x [y0, y0 + L] with lid

@@ -3,7 +3,7 @@
 // Debian 12's libsundials_nvecserial (6.4.1) is built without optimisation (-O0: every loop keeps
 // its index and sum on the stack). Its O(n) operations run at 2-9 ns per entry, and ERKStep spends
 // them on every step: in the 50 x 50 cavity they were 10 % of a WCSPH run, more than the neighbour
-// search after its rebuild was made cheap (bench/README.md, "Integrator overhead").
+// search after its rebuild was made cheap (bench/RESULTS.md, "ERKStep overhead").
 //
 // new_serial_vector makes an ordinary serial vector (same content layout, so N_VGetArrayPointer,
 // N_VClone and SUNLinSol_KLU work unchanged) and replaces the pointers of its O(n) operations with

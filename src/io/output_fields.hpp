@@ -1,4 +1,4 @@
-// The one table of per-particle output fields (STYLE.md #11): it drives the VTP writer and the
+// The one table of per-particle output fields: it drives the VTP writer and the
 // documentation (`output_fields_markdown()`), so a field is described exactly once.
 #pragma once
 #include <array>
@@ -21,7 +21,7 @@ struct OutputField {
   const char* description;  // one line, for the docs
 };
 
-// Point-data arrays written into every VTP frame (INTERFACE.md "Point data in every VTP").
+// Point-data arrays written into every VTP frame (listed in docs/user-guide.md, "Output files").
 inline constexpr std::array<OutputField, 7> kOutputFields{{
     {FieldId::velocity, "velocity", 3, FieldType::Float64, "m/s", "particle velocity (u, v, 0); 1D: (u, 0, 0)"},
     {FieldId::pressure, "pressure", 1, FieldType::Float64, "Pa", "pressure"},

@@ -1,4 +1,4 @@
-// VTP frame writer (TOOLCHAIN.md section 5 settings).
+// VTP frame writer: appended raw binary data, zlib compression, 64-bit headers.
 #include "io/vtp_writer.hpp"
 
 #include <vtkCallbackCommand.h>

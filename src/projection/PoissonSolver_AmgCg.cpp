@@ -8,7 +8,7 @@
 // setup (a fixed SPD preconditioner, so CG stays valid). The hierarchy is rebuilt when a solve needs
 // more than kGrowth times the iterations of the first solve after the last rebuild, after kMaxReuse
 // solves, or when the size changes. Measured on the Re = 1000 cavity, N = 14,400, 150 steps
-// (bench/README.md): never rebuilding, the count climbs to 34 a solve on average; rebuilding every
+// (bench/RESULTS.md): never rebuilding, the count climbs to 34 a solve on average; rebuilding every
 // solve gives 8.6 but costs a setup (~5 solves' worth) each time; keeping the aggregates and redoing
 // the Galerkin products every solve gives 10.3 at nearly the cost of a setup; the growth trigger
 // (1.25) gives 9.5 with 15 setups in 150 solves, the cheapest.

@@ -3,7 +3,7 @@
 // take well under 10 ms a step); above, CG preconditioned by aggregation AMG ("cg_amg"), which on
 // the running Re = 1000 cavity beats KLU from N = 400 up and Jacobi CG at every size measured
 // (N = 900: 2.1 ms a solve against 26 ms KLU and 8.4 ms Jacobi CG; N = 3,600: 9 iterations against
-// 160; bench/README.md).
+// 160; bench/RESULTS.md).
 #include "projection/poisson_solver.hpp"
 
 namespace arksph {

@@ -13,7 +13,7 @@ class PoissonSolverKlu final : public PoissonSolver {
  public:
   PoissonSolverKlu() {
     klu_defaults(&common_);
-    common_.ordering = 0;  // AMD: faster than COLAMD on SPH Laplacians (TOOLCHAIN.md §4)
+    common_.ordering = 0;  // AMD: faster than COLAMD on SPH Laplacians (less fill)
     common_.btf = 0;
   }
   ~PoissonSolverKlu() override { release(); }

@@ -1,4 +1,4 @@
-// The Pozorski-Wawrenczuk correction as a nonlinear solve driven by KINSOL with KLU (DESIGN.md):
+// The Pozorski-Wawrenczuk correction as a nonlinear solve driven by KINSOL with KLU:
 // find p* such that the density at the shifted positions r~ - grad p*/rho0 has no fluctuation.
 //   F(p)_a = -V_a (s_a(p) - mean s),  s_a(p) = 1 - rho_a(r~ - G p / rho0) / rho0   (Szewc eqs. 57-59)
 //   F(p)_0 = -p_0                    (the level of p* is free: pinned)

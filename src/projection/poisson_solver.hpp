@@ -2,8 +2,8 @@
 //   "klu": SuiteSparse KLU with AMD ordering, the exact reference; the symbolic analysis is reused
 //          while the sparsity pattern is unchanged (klu_refactor), redone otherwise.
 //   "cg", "cg_ic": Eigen conjugate gradients with a Jacobi or an incomplete-Cholesky preconditioner,
-//          warm-started from the previous pressure; for large N (TOOLCHAIN.md §4: KLU costs ~20 s per
-//          factorisation at N = 57,600, CG about 2 s).
+//          warm-started from the previous pressure; for large N (measured on an SPH-like Laplacian: KLU
+//          costs ~20 s per factorisation at N = 57,600, CG about 2 s).
 //   "cg_amg": CG preconditioned by one V-cycle of smoothed-aggregation AMG (amg_hierarchy.hpp), the
 //          hierarchy kept across solves; about 9 iterations a solve where Jacobi CG needs 160-640.
 //   "auto": KLU up to 400 unknowns, cg_amg above.

@@ -3,7 +3,7 @@
 // libgomp's default lets idle threads spin at every barrier. On a machine whose cores are busy with
 // other work (CI runners, ctest -j2, a second run) a spinning thread holds a core the working thread
 // needs, and a run becomes 10-30x slower: the default cavity scene to t = 0.1 with 2 threads took
-// 8.9 s with spinning and 0.27 s with passive waiting at a load of 11 on 2 cores (bench/README.md).
+// 8.9 s with spinning and 0.27 s with passive waiting at a load of 11 on 2 cores (bench/RESULTS.md).
 // libgomp reads OMP_WAIT_POLICY once, when it is loaded, so the only way to change it for this
 // process is to set it and re-execute the binary: done once, before anything else happens.
 //

@@ -1,4 +1,4 @@
-// Re-sorting the particles by cell at sync points of the run (method.reorder_every, issue 8): every
+// Re-sorting the particles by cell at sync points of the run (method.reorder_every): every
 // `reorder_every` accepted steps the particles are permuted into row-major order of a grid of cell
 // side = kernel support anchored at domain.min (periodic positions wrapped into the box first), so
 // that the neighbours of a particle sit near it in memory. Particles mix as a flow runs; without

@@ -16,7 +16,7 @@ struct RunOptions {
 };
 
 struct RunResult {
-  int exit_code = 0;  // 0 ok, 3 numerical failure (INTERFACE.md)
+  int exit_code = 0;  // 0 ok, 3 numerical failure
   std::string message;
   bool interrupted = false;  // SIGINT/SIGTERM: exit code 128 + signal, checkpoint written
   std::string checkpoint;    // the last checkpoint written ("" if none)

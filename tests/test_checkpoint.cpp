@@ -1,4 +1,4 @@
-// Checkpoints and restart (io/checkpoint, app/checkpointing): the HDF5 round trip is bit-exact, a
+// Checkpoints and restart (io/checkpoint, run/checkpointing): the HDF5 round trip is bit-exact, a
 // run restarted from a checkpoint ends bit-identical to the run that never stopped, a killed write
 // leaves the previous checkpoint valid, and SIGTERM stops a run with a checkpoint and exit code 143.
 #include <doctest/doctest.h>

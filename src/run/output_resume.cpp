@@ -93,7 +93,7 @@ OutputHistory read_output_history(const std::string& dir, double time, long fram
   return h;
 }
 
-// Declared in app/run_output.hpp. Rows are re-printed with the same %.10g format, which gives back
+// Declared in run/run_output.hpp. Rows are re-printed with the same %.10g format, which gives back
 // the same text.
 void RunOutput::resume(const OutputHistory& h) {
   frames_ = static_cast<int>(h.frames);

@@ -17,6 +17,9 @@ std::vector<std::string> registered_names(const std::string& family) {
   if (family == "ppe_solver") return poisson_solver_names();
   if (family == "viscosity_model") return viscosity_model_names();
   if (family == "density_mode") return {"continuity", "summation"};
+  // boundary.wall_velocity: the tangential velocity of no-slip ghosts (boundary/ghosts.hpp: mirror;
+  // boundary/WallVelocity_Linear_Basa2008.hpp, boundary/WallVelocity_Quadratic_Basa2008.hpp)
+  if (family == "wall_velocity") return {"mirror", "linear", "quadratic"};
   if (family == "pressure_gradient") return pressure_gradient_names();
   if (family == "equation_of_state") return {"tait", "ideal_gas"};
   if (family == "kernel_correction") return kernel_correction_names();

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/names.hpp"
 #include "io/expression.hpp"
 #include "io/scene_schema.hpp"
 
@@ -177,8 +178,9 @@ void read_boundary(const Section& root, Scene& s) {
   b.require(s.corner_alpha >= -1 && s.corner_alpha <= 1, "corner_alpha", "in [-1, 1]", s.corner_alpha);
   s.free_slip_divergence = b.boolean("free_slip_divergence", s.free_slip_divergence);
   // wall_velocity: tangential velocity of no-slip ghosts (Basa et al. 2008 §6.1.2): "mirror" (2w - u of
-  // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall)
-  s.wall_velocity = b.one_of("wall_velocity", {"mirror", "linear", "quadratic"}, s.wall_velocity);
+  // the source) | "linear" (the wall shear of the nearest fluid particle extrapolated into the wall) |
+  // "quadratic" (through the two nearest fluid rows); the list is registered_names("wall_velocity")
+  s.wall_velocity = b.one_of("wall_velocity", registered_names("wall_velocity"), s.wall_velocity);
   // wall_particles: add particles on the no-slip walls carrying the wall velocity, one per fluid
   // particle closer than dx (Basa et al. 2008 §6.1.2), with any wall_velocity rule; 2D
   s.wall_particles = b.boolean("wall_particles", s.wall_particles);

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Installs the Debian packages (if missing), configures a Release build in build/ and compiles it.
-# The binary ends up at build/arksph; the tests at build/tests/arksph_tests.
+# The binary ends up at build/arksph; the tests at build/tests/arksph_{unit,physics,process}_tests.
 set -eu
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh

@@ -1,12 +1,14 @@
 // Helpers shared by the test files.
 #pragma once
+#include <fenv.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
-#include <random>
 #include <fstream>
+#include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -16,55 +18,24 @@
 
 namespace arksph::testing {
 
-// A unit box with no-slip walls (the default boundary) and a non-uniform velocity, ISPH, 10 x 10:
-// a divergence on every particle, so a pressure field with structure everywhere. Forward Euler, one
-// step of 0.01.
-inline const std::string kIsphWalledBox = R"toml(
-[scene]
-name = "isph_box"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-viscosity = 0.01
-[initial]
-velocity = ["sin(pi*x)*cos(0.5*pi*y) + 0.3*x", "0.2*sin(2*pi*x*y)"]
-[method]
-scheme = "isph"
-kernel = "quartic_spline"
-h_over_dx = 1.3
-viscosity_model = "monaghan"
-[time]
-end = 0.01
-integrator = "ARKSPH_FORWARD_EULER_1_1"
-dt = 0.01
-)toml";
+// Floating-point traps (ARKSPH_FP_TRAPS=1, tests/doctest_main.cpp) off for a scope, on the calling
+// thread only (use it around serial code): for a computation that is meant to make infinities or
+// NaNs, or library code vectorised under -fno-trapping-math that converts every lane of a select
+// and so raises FE_INVALID on lanes whose result it then discards. The flags raised inside are
+// cleared, and the traps that were on are restored, at scope exit.
+class FpTrapsOff {
+ public:
+  FpTrapsOff() : saved_(fedisableexcept(FE_ALL_EXCEPT)) {}
+  ~FpTrapsOff() {
+    feclearexcept(FE_ALL_EXCEPT);
+    if (saved_ > 0) feenableexcept(saved_);
+  }
+  FpTrapsOff(const FpTrapsOff&) = delete;
+  FpTrapsOff& operator=(const FpTrapsOff&) = delete;
 
-// A doubly periodic box with a smooth, divergence-free initial velocity (Taylor-Green vortex),
-// WCSPH; callers append their own [time] (and [output]) tables.
-inline const std::string kTaylorGreenBox = R"toml(
-[scene]
-name = "periodic_box"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[boundary]
-left = { kind = "periodic" }
-right = { kind = "periodic" }
-bottom = { kind = "periodic" }
-top = { kind = "periodic" }
-[fluid]
-spacing = 0.0625
-viscosity = 0.01
-[initial]
-velocity = ["sin(2*pi*x)*cos(2*pi*y)", "-cos(2*pi*x)*sin(2*pi*y)"]
-[method]
-scheme = "wcsph"
-kernel = "wendland_quintic"
-h_over_dx = 1.5
-sound_speed = 10
-)toml";
+ private:
+  int saved_;  // the traps that were enabled (-1 if fedisableexcept failed)
+};
 
 // A fresh directory under the system temp dir, removed (permissions restored first) at scope exit.
 struct ScratchDir {
@@ -89,6 +60,18 @@ inline std::string slurp(const std::string& path) {
   ss << in.rdbuf();
   return ss.str();
 }
+
+// The text of the scene file tests/scenes/<name> (scenes shared by several test files).
+inline std::string test_scene(const std::string& name) {
+  const std::string path = std::string(ARKSPH_SOURCE_DIR) + "/tests/scenes/" + name;
+  std::string text = slurp(path);
+  if (text.empty()) throw std::runtime_error("cannot read test scene " + path);
+  return text;
+}
+
+// The scenes of tests/scenes shared by many tests (described in their files).
+inline const std::string kIsphWalledBox = test_scene("isph_walled_box.toml");
+inline const std::string kTaylorGreenBox = test_scene("taylor_green_box.toml");
 
 // The model's fields at its initial state (a field refresh: the pair list is built and kept).
 inline const FluidFields& fields_at_start(Model& model) {

@@ -1,9 +1,8 @@
-// Re-sorting particles by cell at sync points (method.reorder_every, app/particle_reorder.hpp):
-// the cell order itself; a run with re-sorts against the same run without, particle by particle
-// matched by id; and a checkpoint restart across re-sorts against the run that never stopped.
+// Re-sorting particles by cell at sync points (method.reorder_every, app/particle_reorder.hpp), on
+// runs of the binary: a run with re-sorts against the same run without, particle by particle
+// matched by id; the order after a re-sort; and a checkpoint restart across re-sorts against the
+// run that never stopped.
 #include <doctest/doctest.h>
-
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,19 +15,15 @@
 #include "run/particle_reorder.hpp"
 #include "io/checkpoint.hpp"
 #include "io/scene_reader.hpp"
+#include "run_arksph.hpp"
 #include "test_support.hpp"
 
 using namespace arksph;
+using arksph::testing::run_arksph;
 using arksph::testing::ScratchDir;
 using arksph::testing::slurp;
 
 namespace {
-
-int run_arksph(const std::string& args, const std::string& log) {
-  const std::string cmd = "OMP_NUM_THREADS=1 " + std::string(ARKSPH_BINARY) + " " + args + " >>" + log + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // The largest difference of any state component between two final checkpoints, particles matched
 // by id, relative to the largest magnitude of that block (x, y, u, v, rho, e).
@@ -103,29 +98,6 @@ bool is_identity(const std::vector<std::int64_t>& id) {
 
 }  // namespace
 
-TEST_CASE("reorder: cell_order is a stable permutation into non-decreasing row-major cell index") {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> pos(-0.05, 1.05);
-  const std::size_t n = 3000;
-  std::vector<double> x(n), y(n);
-  for (std::size_t a = 0; a < n; ++a) x[a] = pos(rng), y[a] = pos(rng);
-  const Permutation from = cell_order(x.data(), y.data(), n, 0.0, 0.0, 0.1);
-  std::vector<std::uint32_t> sorted(from);
-  std::sort(sorted.begin(), sorted.end());
-  for (std::size_t i = 0; i < n; ++i) REQUIRE(sorted[i] == i);  // a permutation
-  const std::vector<std::uint64_t> key = cell_keys(x.data(), y.data(), n, 0.0, 0.0, 0.1);
-  std::size_t out_of_order = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    const std::uint64_t k0 = key[from[i - 1]], k1 = key[from[i]];
-    out_of_order += k1 < k0 || (k1 == k0 && from[i] < from[i - 1]);  // stable within a cell
-  }
-  CHECK(out_of_order == 0);
-  // The key itself: cell (i, j) of side 0.1 from the origin, j * nx + i, negatives clamped to 0.
-  const double px[] = {0.05, 0.15, 0.05, -0.01}, py[] = {0.05, 0.05, 0.25, 0.35};
-  const std::vector<std::uint64_t> k4 = cell_keys(px, py, 4, 0.0, 0.0, 0.1);
-  CHECK(k4 == std::vector<std::uint64_t>{0, 1, 4, 6});  // nx = 2 (largest x cell is 1)
-}
-
 // Same scene with and without re-sorting (every 4 steps, from a shuffled start, so the first
 // re-sort moves almost every particle): fixed step, so both take the same steps. Particles matched
 // by id must agree to round-off: the re-sort changes only the order of the neighbour sums.
@@ -199,12 +171,11 @@ TEST_CASE("reorder: after a re-sort the particles are in cell order (monotone ce
 // Run to T; run to T/2 and restart to T, with re-sorts every 7 steps (the checkpoint at step 50
 // falls between two) and every 10 (a re-sort at the checkpoint step itself): the final states and
 // the time series (whose density diagnostics use the t = 0 number density, which must follow the
-// order) are bit-identical, as without re-sorting (test_checkpoint.cpp).
+// order) are bit-identical, as without re-sorting (test_checkpoint_runs.cpp).
 TEST_CASE("reorder: a checkpoint restart across re-sorts ends bit-identical to the uninterrupted run") {
   ScratchDir dir("reorder_restart");
   const std::string scene = dir / "tg.toml", log = dir / "log.txt";
-  std::ofstream(scene) << arksph::testing::kTaylorGreenBox
-                       << "[time]\nend = 0.2\ndt = 0.002\n[output]\nevery = 0.05\ncheckpoint_every = 0.1\n";
+  std::ofstream(scene) << arksph::testing::test_scene("taylor_green_checkpoints.toml");
   for (const char* every : {"7", "10"}) {
     CAPTURE(every);
     const std::string full = dir / (std::string("full") + every), half = dir / (std::string("half") + every);

@@ -191,8 +191,10 @@ TEST_CASE("isph: KLU and CG give the same pressure") {
 
 // After the projection, the divergence of C&R eq. 17 is not zero (the projection is approximate:
 // eq. 19 is not the product of the divergence and gradient operators) but much smaller. A field
-// that vanishes on the walls, as the no-slip boundary condition requires; 0.2 is a bound on the
-// measured ratio (printed) that an unprojected or wrongly signed correction would exceed.
+// that vanishes on the walls, as the no-slip boundary condition requires. Measured ratio (printed)
+// 0.04695, the same in the -march=native and the generic build; +-10 % around it: room for a
+// change of summation order or solver, while an unprojected or wrongly signed correction gives
+// >= 1 and an exact projection (a different operator) gives far less.
 TEST_CASE("isph: the projection removes most of the velocity divergence") {
   const Scene scene = box_scene({"fluid.spacing=0.05", "initial.velocity=[\"sin(pi*x)*sin(pi*y)\", \"0\"]"});
   Model model = build_model(scene);
@@ -211,7 +213,9 @@ TEST_CASE("isph: the projection removes most of the velocity divergence") {
   const double after = norm(divergence_cummins_rudman(model.rhs->fields()));
   MESSAGE("divergence norm before ", before, " after ", after);
   CHECK(before > 0);
-  CHECK(after < 0.2 * before);
+  constexpr double kMeasuredRatio = 0.04695, kMargin = 1.1;
+  CHECK(after / before < kMeasuredRatio * kMargin);
+  CHECK(after / before > kMeasuredRatio / kMargin);
 }
 
 // The Pozorski-Wawrenczuk correction on the perturbed lattice (Szewc Fig. 15): the density

@@ -143,18 +143,24 @@ TEST_CASE("gpps: one projection makes a divergent particle field nearly divergen
   const double div_after = rms(divergence_cummins_rudman(model.rhs->fields()));
   const double ratio_u = rms(err_after) / rms(err_before), ratio_div = div_after / div_before;
   MESSAGE("gradient part left ", ratio_u, ", divergence left ", ratio_div);
-  // Tolerances: bounds on the measured ratios (printed), which grid transfer and the SPH divergence
-  // (whose wall truncation the projection removes as a source) limit; a missing or wrongly signed
-  // correction gives ratios >= 1.
-  CHECK(ratio_u < 0.1);
-  CHECK(ratio_div < 0.3);
+  // The ratios (printed) are limited by the grid transfer and the SPH divergence (whose wall
+  // truncation the projection removes as a source): measured 0.04984 and 0.06609, the same in the
+  // -march=native and the generic build. +-10 % around them: room for a change of summation order
+  // or solver; a missing or wrongly signed correction gives ratios >= 1.
+  constexpr double kMargin = 1.1;
+  CHECK(ratio_u < 0.04984 * kMargin);
+  CHECK(ratio_u > 0.04984 / kMargin);
+  CHECK(ratio_div < 0.06609 * kMargin);
+  CHECK(ratio_div > 0.06609 / kMargin);
   CHECK(model.projection->stats().symbolic_analyses == 1);
 }
 
 // method.gpps_volume_relaxation: from rest on a lattice squeezed towards x = 0.5, one projected
 // step must move particles so that the particle volume per grid cell becomes more uniform; without
-// the relaxation nothing moves (no source). Bound: the r.m.s. of (phi - 1) must fall by at least
-// 10 % with beta = 0.5 (printed; a wrong sign makes it grow).
+// the relaxation nothing moves (no source). With beta = 0.5 the r.m.s. of (phi - 1) falls from
+// 0.04545 to 0.03386 (printed; ratio 0.7449, the same in the -march=native and the generic build);
+// +-5 % around the ratio: room for a change of summation order, while a wrong sign makes it grow
+// and a relaxation left out leaves it at 1.
 TEST_CASE("gpps: the volume relaxation evens out the particle volume per cell") {
   auto phi_rms = [](const Model& model, const Scene& scene, const double* y) {
     const StateLayout& L = model.rhs->layout();
@@ -176,5 +182,7 @@ TEST_CASE("gpps: the volume relaxation evens out the particle volume per cell") 
   const double before = phi_rms(model, scene, y0.data()), after = phi_rms(model, scene, y1.data());
   MESSAGE("r.m.s. of the cell volume fraction - 1: before ", before, ", after ", after);
   CHECK(before > 0.01);
-  CHECK(after < 0.9 * before);
+  constexpr double kMeasuredRatio = 0.7449, kMargin = 1.05;
+  CHECK(after / before < kMeasuredRatio * kMargin);
+  CHECK(after / before > kMeasuredRatio / kMargin);
 }

@@ -41,9 +41,14 @@ TEST_CASE("hydrostatic 1d: the approximate projection is smooth, the exact one d
   REQUIRE(approx.size() == 20);
   const double r_approx = roughness(approx), r_exact = roughness(exact);
   MESSAGE("roughness approximate ", r_approx, ", exact ", r_exact);
-  // Measured 0.0068 and 2.9: bounds with a wide margin either side.
-  CHECK(r_approx < 0.05);
-  CHECK(r_exact > 0.3);
+  // Measured 0.006765 and 2.939, the same in the -march=native and the generic build. +-10 %
+  // around them: room for a change of summation order or solver. A smooth profile from the exact
+  // operator, or a zig-zag from the approximate one, is off by orders of magnitude.
+  constexpr double kMargin = 1.1;
+  CHECK(r_approx < 0.006765 * kMargin);
+  CHECK(r_approx > 0.006765 / kMargin);
+  CHECK(r_exact < 2.939 * kMargin);
+  CHECK(r_exact > 2.939 / kMargin);
   // The approximate profile is hydrostatic: slope -rho g = -1 in the interior (the two particles
   // next to each wall feel the truncated kernel; 2% tolerance for the interior slope).
   for (std::size_t i = 3; i + 3 < approx.size(); ++i)

@@ -85,12 +85,14 @@ LatticeError channel_error(const std::vector<std::string>& sets) {
 // on nu lap u: the measured discretisation error (printed with MESSAGE; morris 0.0065, violeau =
 // monaghan = cleary(xi = 4) 0.044, two_pass 0.026, direct with Shepard 0.017) with ~30 % headroom,
 // well below the O(1) error of a wrong sign or factor. The check covers the wall rows, so a ghost
-// layer too thin for a model shows. A model registered without an entry here fails the test: its
-// author states its expected error.
+// layer too thin for a model shows. A model registered without an entry here is held to
+// kDefaultLaplacianTol, the loosest bound of the listed consistent models: a new model is tested
+// from its registration on, and its own measured error belongs in the table.
 struct LaplacianCase {
   std::vector<std::string> extra;
   double tol;
 };
+constexpr double kDefaultLaplacianTol = 0.057;
 const std::map<std::string, std::vector<LaplacianCase>> kLaplacianCases = {
     {"morris", {{{}, 0.0085}}},
     {"monaghan", {{{}, 0.057}}},
@@ -143,11 +145,9 @@ TEST_CASE("viscosity models: nu lap u of u = (sin(pi y), 0) in a walled channel 
   for (const std::string& model : registered_names("viscosity_model")) {
     CAPTURE(model);
     const auto it = kLaplacianCases.find(model);
-    if (it == kLaplacianCases.end()) {
-      FAIL_CHECK("viscosity model " << model << " has no expectation in kLaplacianCases");
-      continue;
-    }
-    for (const LaplacianCase& c : it->second) {
+    const std::vector<LaplacianCase> fallback = {{{}, kDefaultLaplacianTol}};
+    if (it == kLaplacianCases.end()) MESSAGE(model << ": no entry in kLaplacianCases, held to the default bound");
+    for (const LaplacianCase& c : it == kLaplacianCases.end() ? fallback : it->second) {
       std::vector<std::string> sets = {"method.viscosity_model=" + model};
       sets.insert(sets.end(), c.extra.begin(), c.extra.end());
       const LatticeError e = channel_error(sets);

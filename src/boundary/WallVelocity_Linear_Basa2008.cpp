@@ -7,16 +7,11 @@
 
 namespace arksph {
 
-LinearWallVelocity::LinearWallVelocity(const Scene& scene, double dx) : scene_(scene), dx_(dx) {}
-
 void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
                                double* v) const {
   const double* pos[2] = {x, y};
   double* vel[2] = {u, v};
-  for (int side = 0; side < 4; ++side) {
-    if (!WallBins::applies(scene_, side)) continue;
-    const SideSpec& s = scene_.sides[side];
-    const WallBins wb(scene_, side, dx_);
+  for_each_no_slip_wall(scene_, dx_, [&](int side, const WallBins& wb, double w_t) {
     const int k = wb.k, t = wb.t;
     const double plane = wb.plane;
     auto bin_of = [&](double c) { return wb.of(c); };
@@ -33,7 +28,6 @@ void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const doub
         nearest_[b] = static_cast<long>(a);
       }
     }
-    const double w_t = s.velocity[t];
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g.wall_side[i] != side) continue;
       const std::size_t gi = n_real + i;
@@ -42,7 +36,7 @@ void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const doub
       const double d_near = std::abs(pos[k][a] - plane);
       vel[t][gi] = w_t - g.wall_dist[i] / d_near * (vel[t][a] - w_t);
     }
-  }
+  });
 }
 
 }  // namespace arksph

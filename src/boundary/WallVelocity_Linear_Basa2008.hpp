@@ -7,21 +7,17 @@
 #pragma once
 #include <vector>
 
-#include "boundary/ghosts.hpp"
-#include "core/scene.hpp"
+#include "boundary/wall_velocity_rule.hpp"
 
 namespace arksph {
 
-class LinearWallVelocity {
+class LinearWallVelocity final : public WallVelocityRule {
  public:
-  LinearWallVelocity(const Scene& scene, double dx);
-  // u, v: velocities of all points (real then ghosts); overwrites the tangential component of the
-  // single-wall mirror ghosts of no-slip walls.
-  void apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u, double* v) const;
+  using WallVelocityRule::WallVelocityRule;
+  void apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
+             double* v) const override;
 
  private:
-  const Scene& scene_;
-  double dx_;
   mutable std::vector<double> best_;  // per tangential bin: its wall distance (scratch, kept to avoid allocation)
   mutable std::vector<long> nearest_;  // per tangential bin: nearest real particle (-1: none)
 };

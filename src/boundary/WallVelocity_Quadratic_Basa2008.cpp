@@ -7,16 +7,11 @@
 
 namespace arksph {
 
-QuadraticWallVelocity::QuadraticWallVelocity(const Scene& scene, double dx) : scene_(scene), dx_(dx) {}
-
 void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
                                   double* v) const {
   const double* pos[2] = {x, y};
   double* vel[2] = {u, v};
-  for (int side = 0; side < 4; ++side) {
-    if (!WallBins::applies(scene_, side)) continue;
-    const SideSpec& s = scene_.sides[side];
-    const WallBins wb(scene_, side, dx_);
+  for_each_no_slip_wall(scene_, dx_, [&](int side, const WallBins& wb, double w_t) {
     const int k = wb.k, t = wb.t;
     const double plane = wb.plane;
     auto bin_of = [&](double c) { return wb.of(c); };
@@ -39,7 +34,6 @@ void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const d
       const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
       if (first_[b] >= 0 && d > d1[b] + 0.5 * dx_ && d < d2[b]) d2[b] = d, second_[b] = static_cast<long>(a);
     }
-    const double w_t = s.velocity[t];
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g.wall_side[i] != side) continue;
       const std::size_t gi = n_real + i;
@@ -58,7 +52,7 @@ void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const d
       const double l2 = s_g * (s_g - e1) / (e2 * (e2 - e1));
       vel[t][gi] = w_t * l0 + u1 * l1 + u2 * l2;
     }
-  }
+  });
 }
 
 }  // namespace arksph

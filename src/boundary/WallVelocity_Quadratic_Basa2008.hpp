@@ -10,21 +10,17 @@
 #pragma once
 #include <vector>
 
-#include "boundary/ghosts.hpp"
-#include "core/scene.hpp"
+#include "boundary/wall_velocity_rule.hpp"
 
 namespace arksph {
 
-class QuadraticWallVelocity {
+class QuadraticWallVelocity final : public WallVelocityRule {
  public:
-  QuadraticWallVelocity(const Scene& scene, double dx);
-  // u, v: velocities of all points (real then ghosts); overwrites the tangential component of the
-  // single-wall mirror ghosts of no-slip walls.
-  void apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u, double* v) const;
+  using WallVelocityRule::WallVelocityRule;
+  void apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
+             double* v) const override;
 
  private:
-  const Scene& scene_;
-  double dx_;
   mutable std::vector<long> first_, second_;  // per tangential bin: nearest and next row (-1: none)
   mutable std::vector<double> d1_, d2_;       // their wall distances (scratch)
 };

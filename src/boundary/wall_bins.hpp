@@ -36,4 +36,14 @@ struct WallBins {
   }
 };
 
+// Calls side_fn(side, bins, w_t) for each no-slip wall side, w_t the wall's tangential velocity.
+template <class SideFn>
+void for_each_no_slip_wall(const Scene& scene, double spacing, SideFn&& side_fn) {
+  for (int side = 0; side < 4; ++side) {
+    if (!WallBins::applies(scene, side)) continue;
+    const WallBins wb(scene, side, spacing);
+    side_fn(side, wb, scene.sides[side].velocity[wb.t]);
+  }
+}
+
 }  // namespace arksph

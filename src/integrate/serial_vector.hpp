@@ -12,7 +12,7 @@
 //
 // The replacements do exactly the arithmetic of nvector_serial.c, in the same order and with the
 // same special cases (N_VLinearSum with a == b computes a (x + y), not a x + a y): runs are bit for
-// bit those with the library's own operations (tests/test_serial_vector.cpp checks each operation
+// bit those with the library's own operations (tests/unit/test_serial_vector.cpp checks each operation
 // against the library). The fused and vector-array operations stay unset, as in N_VNew_Serial, so
 // ARKODE composes them from these.
 #pragma once

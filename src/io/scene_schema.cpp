@@ -51,6 +51,18 @@ std::string one_line(std::string s) {
   return s;
 }
 
+// The value of a TOML number as a double; an integer that a double cannot hold exactly (beyond 2^53)
+// is refused with its digits, since rounding it would change the value written.
+double number_of(const toml::node& n, const Reporter& rep, const std::string& key) {
+  if (auto i = n.value_exact<int64_t>()) {
+    const double d = static_cast<double>(*i);
+    if (std::abs(d) > 9007199254740992.0 || static_cast<int64_t>(d) != *i)
+      rep.fail(key, "the integer " + std::to_string(*i) + " is not exactly representable as a number here (|n| <= 2^53)");
+    return d;
+  }
+  return *n.value_exact<double>();
+}
+
 }  // namespace
 
 std::string format_number(double v) {
@@ -132,7 +144,7 @@ double Section::number(std::string_view name, std::optional<double> fallback) co
   if (!has(name) && fallback) return *fallback;
   const toml::node& n = required(name);
   if (!n.is_number()) fail(name, "expected a number, " + got(n));
-  double v = *n.value<double>();
+  double v = number_of(n, *rep_, key(name));
   if (!std::isfinite(v)) fail(name, "expected a finite number, " + got(n));
   return v;
 }
@@ -188,7 +200,7 @@ std::vector<double> Section::numbers(std::string_view name, std::size_t count,
     const toml::node& e = *a->get(i);
     std::string k = key(name) + "[" + std::to_string(i) + "]";
     if (!e.is_number()) rep_->fail(k, "expected a number, " + got(e));
-    double v = *e.value<double>();
+    double v = number_of(e, *rep_, k);
     if (!std::isfinite(v)) rep_->fail(k, "expected a finite number, " + got(e));
     out.push_back(v);
   }
@@ -199,8 +211,10 @@ std::string Section::expression_at(const toml::node& n, const std::string& k,
                                    const std::vector<std::string>& variables) const {
   std::string text;
   if (auto s = n.value_exact<std::string>()) text = *s;
-  else if (n.is_number() && std::isfinite(*n.value<double>()))
-    text = n.is_integer() ? std::to_string(*n.value_exact<int64_t>()) : format_number(*n.value<double>());
+  else if (n.is_integer())
+    text = std::to_string(*n.value_exact<int64_t>());
+  else if (n.is_number() && std::isfinite(*n.value_exact<double>()))
+    text = format_number(*n.value_exact<double>());
   else rep_->fail(k, "expected an expression (string or number), " + got(n));
   try {
     Expression check(text, variables);

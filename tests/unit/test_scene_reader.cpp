@@ -359,3 +359,28 @@ TEST_CASE("scene: bad input gives a one-line InputError naming the key") {
     }
   }
 }
+
+TEST_CASE("scene: integers beyond 2^53 are refused with their digits, not rounded or read as garbage") {
+  // A double holds every integer up to 2^53 exactly; beyond, the value read would differ from the one
+  // written (toml++ gives no double for such an integer at all).
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"fluid.viscosity=9007199254740993", "fluid.viscosity"},
+      {"time.end=9223372036854775807", "time.end"},
+      {"method.correction_max_iterations=9223372036854775807", "method.correction_max_iterations"},
+      {"domain.max=[1, 9007199254740993]", "domain.max[1]"},
+  };
+  for (const auto& [set, key] : bad) {
+    CAPTURE(set);
+    try {
+      read(kBase, {set});
+      FAIL_CHECK("accepted");
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      CHECK(msg.find(key) != std::string::npos);
+      CHECK(msg.find(set.substr(set.find_first_of("0123456789-", set.find('=')))
+                         .substr(0, 16)) != std::string::npos);  // the digits as written
+    }
+  }
+  // 2^53 itself is exact.
+  CHECK(read(kBase, {"fluid.viscosity=9007199254740992"}).viscosity == 9007199254740992.0);
+}

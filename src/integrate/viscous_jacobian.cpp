@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "boundary/ghosts.hpp"
 #include "integrate/dependency_pattern.hpp"
 
 namespace arksph {
 
 ViscousJacobian::ViscousJacobian(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs) {
-  const double R = rhs.kernel().radius(), dx = scene.spacing;
-  const double Rs = ghost_depth(scene, R);  // R, or 2R for the two-pass model
+  const double dx = scene.spacing;
+  const double Rs = rhs.ghost_depth();  // the support radius, or twice that for the two-pass model
   bool no_slip_wall = false;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     no_slip_wall |= scene.sides[s].kind == SideKind::wall && scene.sides[s].slip == SlipKind::no_slip;

@@ -16,6 +16,7 @@ class ViscosityCleary final : public ParticleTerm<ViscosityCleary> {
  public:
   explicit ViscosityCleary(double xi) : xi_(xi) {}
   std::string name() const override { return "viscosity:cleary"; }
+  bool can_be_implicit() const override { return true; }
   template <class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();

@@ -17,6 +17,7 @@ namespace arksph {
 class ViscosityDirect final : public ParticleTerm<ViscosityDirect> {
  public:
   std::string name() const override { return "viscosity:direct"; }
+  bool can_be_implicit() const override { return true; }
   template <class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double w0 = f.kernel->W(0.0), d2w0 = f.kernel->d2Wdr2(0.0);

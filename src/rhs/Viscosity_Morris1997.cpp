@@ -12,6 +12,7 @@ namespace arksph {
 class ViscosityMorris final : public ParticleTerm<ViscosityMorris> {
  public:
   std::string name() const override { return "viscosity:morris"; }
+  bool can_be_implicit() const override { return true; }
   bool reads_kernel_value() const override { return false; }
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {

@@ -19,6 +19,7 @@ class ViscosityVioleau final : public ParticleTerm<ViscosityVioleau> {
  public:
   explicit ViscosityVioleau(std::string name) : name_(std::move(name)) {}
   std::string name() const override { return name_; }
+  bool can_be_implicit() const override { return true; }
   template <class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();

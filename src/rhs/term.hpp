@@ -28,6 +28,13 @@ class Term {
   // Whether apply_particle reads W_ab other than through corrected_gradient (which needs it only
   // when a kernel correction is on). The sweep skips W when no term needs it.
   virtual bool reads_kernel_value() const { return true; }
+  // Whether the term may go into the implicit partition of an IMEX split (time.imex): it adds only
+  // to dudt, dvdt, and affinely in the velocities (the viscous terms).
+  virtual bool can_be_implicit() const { return false; }
+  // Whether the term needs the velocity gradient at the ghosts themselves, so that a ghost needs its
+  // own full neighbourhood: the ghost layers are then twice the support radius deep (Basa et al.
+  // 2008 §5.2, the two-pass viscosity).
+  virtual bool needs_ghost_velocity_gradients() const { return false; }
 };
 
 }  // namespace arksph

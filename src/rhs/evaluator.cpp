@@ -200,8 +200,9 @@ void RhsEvaluator::sweep(std::size_t first, std::size_t last) {
   FluidFields& f = fields_;
   bool with_w = f.correction != FluidFields::Correction::none;
   for (std::size_t k = first; k < last; ++k) with_w = with_w || terms_[k]->reads_kernel_value();
-  neighbors_.sweep(f, with_w, [&](std::size_t a, const Neighborhood& nb) {
-    for (std::size_t k = first; k < last; ++k) terms_[k]->apply_particle(f, a, nb);
+  const std::unique_ptr<Term>* terms = terms_.data();
+  neighbors_.sweep(f, with_w, [&f, terms, first, last](std::size_t a, const Neighborhood& nb) {
+    for (std::size_t k = first; k < last; ++k) terms[k]->apply_particle(f, a, nb);
   });
 }
 

@@ -10,6 +10,7 @@
 //                                              into a per-thread buffer, nothing stored per pair.
 #pragma once
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include <omp.h>
@@ -81,11 +82,12 @@ void NeighborCache::sweep(const FluidFields& f, bool with_w, Body&& body) {
 #pragma omp parallel
   {
     Neighborhood& nb = scratch_[static_cast<std::size_t>(omp_get_thread_num())];
+    std::remove_reference_t<Body> each = body;  // a copy per thread: its captures stay in registers
     // Dynamic chunks balance the threads; each particle's sums are the same whatever thread runs it.
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t a = 0; a < n; ++a) {
       gather_neighborhood(candidates_, *f.kernel, x, y, a, nb);
-      body(a, nb);
+      each(a, nb);
     }
   }
 }

@@ -45,11 +45,11 @@ struct GhostSet {
   }
 };
 
-// Depth of the ghost layers for a scene: the kernel support radius, or twice that for the two-pass
-// viscosity (Basa et al. 2008 §5.2: a ghost seen by a fluid particle needs its own full neighbourhood).
-inline double ghost_depth(const Scene& scene, double support_radius) {
-  const bool nested = scene.viscosity > 0 && scene.viscosity_model == "two_pass";
-  return nested ? 2.0 * support_radius : support_radius;
+// Depth of the ghost layers: the kernel support radius, or twice that when some term needs the
+// velocity gradient at the ghosts themselves (Basa et al. 2008 §5.2: a ghost seen by a fluid particle
+// then needs its own full neighbourhood; Term::needs_ghost_velocity_gradients).
+inline double ghost_depth(double support_radius, bool ghost_velocity_gradients) {
+  return ghost_velocity_gradients ? 2.0 * support_radius : support_radius;
 }
 
 class GhostBuilder {

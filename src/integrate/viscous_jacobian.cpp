@@ -3,19 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
-#include "boundary/ghosts.hpp"
+#include "boundary/wall_velocity_rules.hpp"
 #include "integrate/dependency_pattern.hpp"
 
 namespace arksph {
 
 ViscousJacobian::ViscousJacobian(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs) {
-  const double R = rhs.kernel().radius(), dx = scene.spacing;
-  const double Rs = ghost_depth(scene, R);  // R, or 2R for the two-pass model
+  const double dx = scene.spacing;
+  const double Rs = rhs.ghost_depth();  // the support radius, or twice that for the two-pass model
   bool no_slip_wall = false;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     no_slip_wall |= scene.sides[s].kind == SideKind::wall && scene.sides[s].slip == SlipKind::no_slip;
   const bool extrapolated = no_slip_wall && scene.dimension == 2 &&
-                            (scene.wall_velocity == "linear" || scene.wall_velocity == "quadratic");
+                            wall_velocity_rules().at(scene.wall_velocity).make != nullptr;
   radius_ = extrapolated ? std::max(Rs, std::hypot(Rs + dx, std::max(Rs, 3.0 * dx))) : Rs;
   skin_ = 0.5 * dx;
   for (int k = 0; k < scene.dimension; ++k) {

@@ -5,7 +5,9 @@
 namespace arksph {
 
 ViscousSplit::ViscousSplit(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs), jac_(scene, rhs) {
-  rhs_.set_viscosity_implicit(true);
+  RhsOptions split = rhs_.options();
+  split.imex_split = true;
+  rhs_.set_options(split);
 }
 
 // True when y matches ref on every row outside the velocity block.

@@ -19,7 +19,7 @@ namespace arksph {
 
 class ViscousSplit {
  public:
-  // Switches rhs to the split evaluation (RhsEvaluator::set_viscosity_implicit).
+  // Switches rhs to the split evaluation (RhsOptions::imex_split).
   ViscousSplit(const Scene& scene, RhsEvaluator& rhs);
   void explicit_rhs(double t, const double* y, double* ydot);
   void implicit_rhs(double t, const double* y, double* ydot);

@@ -1,6 +1,6 @@
 // The neighbours of one particle, gathered from its Verlet candidates into a small scratch buffer
 // that stays in the first-level cache: index b, r_ab and F_ab = (dW/dr)/r in candidate order, and
-// W_ab when some term reads it (with_w). The force sweep (rhs/evaluator.cpp) fills one per particle
+// W_ab when some term reads it (with_w). The force sweep (rhs/neighbor_cache.hpp) fills one per particle
 // and hands it to every force term in turn, so each pair's kernel is evaluated once per f(t, y) and
 // no per-pair array is stored. r_ab^2 is recomputed on each visit (as PairList does), so the values
 // are those of PairList (same order, same floating-point operations), and a term gives

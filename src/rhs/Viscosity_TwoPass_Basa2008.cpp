@@ -6,9 +6,10 @@
 // pair forces are opposite and linear momentum is conserved. With a kernel correction (Basa §4)
 // both passes use the corrected gradient, in the difference form sum_c V_c (u_c - u_b) G_bc.
 //
-// A ghost b at depth d behind a wall needs neighbours down to d + R: the scene gets ghost layers
-// twice as deep (boundary/ghosts.hpp ghost_depth, Basa §5.2). Reflected ghosts get their own first
-// pass over the points within R (a cell search); periodic images copy their source's stress.
+// A ghost b at depth d behind a wall needs neighbours down to d + R: the term asks for ghost layers
+// twice as deep (needs_ghost_velocity_gradients; boundary/ghosts.hpp ghost_depth, Basa §5.2).
+// Reflected ghosts get their own first pass over the points within R (a cell search); periodic
+// images copy their source's stress.
 #include <cmath>
 
 #include "kernels/kernel.hpp"

@@ -1,18 +1,16 @@
-// f(t, y) of the semi-discrete particle system: refreshes ghosts and neighbours at the positions in
-// y, runs the enabled terms in stage order and returns [u ; du/dt ; drho/dt] in the state layout.
+// f(t, y) of the semi-discrete particle system: loads the state y into the fields, refreshes the
+// ghosts (rhs/ghost_field.hpp) and the neighbours (rhs/neighbor_cache.hpp) at its positions, sums
+// the terms in stage order and returns [u ; du/dt ; drho/dt] in the state layout.
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "boundary/WallVelocity_Linear_Basa2008.hpp"
-#include "boundary/WallVelocity_Quadratic_Basa2008.hpp"
-#include "boundary/ghosts.hpp"
 #include "core/particles.hpp"
 #include "kernels/kernel.hpp"
-#include "neighbors/cell_list.hpp"
-#include "neighbors/neighborhood.hpp"
 #include "rhs/fluid_fields.hpp"
+#include "rhs/ghost_field.hpp"
+#include "rhs/neighbor_cache.hpp"
 #include "rhs/term.hpp"
 
 namespace arksph {
@@ -22,10 +20,22 @@ struct RhsTiming {
   double terms = 0;      // the physical terms
 };
 
+// The terms a sum runs: every term, or one side of the IMEX split (Term::can_be_implicit).
+enum class Partition { all, explicit_terms, implicit_terms };
+
+struct RhsOptions {
+  // IMEX (time.imex): eval() leaves the implicit partition out of ydot (f_E) and keeps its
+  // acceleration for implicit_part() (f_I). Off: ydot holds every term.
+  bool imex_split = false;
+  // The plain pair loops where the fields allow them (rhs/particle_term.hpp). Off, the general loops
+  // always: they give the same bits, which the tests compare.
+  bool plain_pair_loops = true;
+};
+
 class RhsEvaluator {
  public:
   RhsEvaluator(const Scene& scene, const ParticleSet& particles, Kernel kernel,
-               std::vector<std::unique_ptr<Term>> terms);
+               std::vector<std::unique_ptr<Term>> terms, RhsOptions options = {});
 
   const StateLayout& layout() const { return layout_; }
   // Fills the initial state vector (size layout().size()).
@@ -33,71 +43,62 @@ class RhsEvaluator {
   // ydot = f(t, y). Safe to call with ydot == nullptr to refresh fields only (diagnostics).
   void eval(double t, const double* y, double* ydot);
 
+  const RhsOptions& options() const { return options_; }
+  void set_options(const RhsOptions& options);
   const FluidFields& fields() const { return fields_; }
   const Kernel& kernel() const { return kernel_; }
   const ParticleSet& particles() const { return particles_; }
   std::vector<std::string> term_names() const;
+  double ghost_depth() const { return ghosts_.depth(); }
   double max_acceleration() const { return max_accel_; }  // from the last eval, real particles
   long evaluations() const { return evals_; }
-  long neighbor_rebuilds() const { return rebuilds_; }
+  long neighbor_rebuilds() const { return neighbors_.rebuilds(); }
   // Forces a fresh ghost set and candidate list at the next eval, as after a restart from a
   // checkpoint: called at every checkpoint so that a restarted run sums pairs in the same order.
-  void invalidate_neighbors() { ref_x_.clear(); }
+  void invalidate_neighbors() { neighbors_.invalidate(); }
   // The particles re-ordered (core/particle_order.hpp: new index i is old index from[i]): the
   // constant per-particle data follow, the neighbour list and ghosts are rebuilt at the next eval.
   // The state vector is the caller's to permute; fields() are stale until the next eval.
   void permute_particles(const std::vector<std::uint32_t>& from);
   const RhsTiming& timing() const { return timing_; }
 
-  // IMEX (time.imex): with `on`, eval() leaves the viscous terms out of ydot (f_E) and keeps their
-  // acceleration for implicit_part() (f_I). Off (the default), eval() is the explicit path unchanged.
-  void set_viscosity_implicit(bool on) { implicit_viscosity_ = on; }
-  bool viscosity_implicit() const { return implicit_viscosity_; }
-  // f_I of the last eval(): zero except the velocity block, which holds the viscous acceleration.
+  // f_I of the last eval() with options().imex_split: zero except the velocity block, which holds
+  // the acceleration of the implicit partition.
   void implicit_part(double* ydot_i) const;
-  // The viscous acceleration (au, av) of the real particles for real velocities (u, v) (v, av unused
-  // in 1D), at the positions, densities and kernel corrections of the last eval(), which stay
-  // frozen: ghost velocities follow from (u, v) by the wall rules. Leaves fields() as it found them.
-  // Affine in (u, v): the probes of the implicit Jacobian (app/viscous_jacobian.hpp).
+  // The acceleration (au, av) of the implicit partition (the viscous terms) of the real particles
+  // for real velocities (u, v) (v, av unused in 1D), at the positions, densities and kernel
+  // corrections of the last eval(), which stay frozen: ghost velocities follow from (u, v) by the
+  // wall rules. Leaves fields() as it found them. Affine in (u, v): the probes of the implicit
+  // Jacobian (integrate/viscous_jacobian.hpp).
   void viscous_acceleration(const double* u, const double* v, double* au, double* av);
 
  private:
+  bool in(Partition part, std::size_t k) const {
+    return part == Partition::all || implicit_[k] == (part == Partition::implicit_terms);
+  }
   double load_state(double t, const double* y);
   double store_derivatives(const double* y, double* ydot) const;
-  void refresh_ghosts(bool rebuild);
-  void copy_to_ghosts(std::vector<double>& field);
-  void ghost_velocities();
-  void apply_viscous_terms(std::vector<double>& au, std::vector<double>& av);
-  void force_sweep(std::size_t first, std::size_t last);
+  void sum_stages(Partition part);
+  void implicit_acceleration(std::vector<double>& au, std::vector<double>& av);
+  void sweep(std::size_t first, std::size_t last);
 
   StateLayout layout_;
   ParticleSet particles_;
   Kernel kernel_;
-  std::vector<std::unique_ptr<Term>> terms_;
-  GhostBuilder ghost_builder_;
-  GhostSet ghosts_;
-  std::unique_ptr<LinearWallVelocity> linear_wall_;  // only with boundary.wall_velocity = "linear"
-  std::unique_ptr<QuadraticWallVelocity> quadratic_wall_;  // only with boundary.wall_velocity = "quadratic"
-  CellList cells_;
-  CandidateList candidates_;
-  std::vector<double> ref_x_, ref_y_;  // real positions at the last candidate rebuild
-  double skin_ = 0;
-  long rebuilds_ = 0;
+  std::vector<std::unique_ptr<Term>> terms_;  // in stage order
+  std::vector<bool> implicit_;                // per term: Term::can_be_implicit
+  GhostField ghosts_;
+  NeighborCache neighbors_;
   FluidFields fields_;
-  bool lean_pairs_;  // method.neighbor_storage = "candidates": no per-pair kernel values stored
-  bool sweep_;       // method.force_sweep: per-particle terms share one gathered neighbourhood
-  bool stored_pairs_on_refresh_;  // a field refresh stores the pair list (the projection schemes)
-  bool pairs_every_eval_ = true;  // some term or the scheme reads f.pairs: build them at every f
-  std::vector<Neighborhood> scratch_;
-  std::size_t sweep_room_ = 0;  // the largest candidate row since the last rebuild  // force sweep: one neighbourhood buffer per thread
+  RhsOptions options_;
+  PairUse pairs_for_terms_ = PairUse::repeated;  // f.pairs at every f: for terms that walk them
+  PairUse pairs_for_refresh_ = PairUse::once;    // and after a field refresh, for its readers
   bool periodic_[2] = {false, false};
   double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;
   long evals_ = 0;
   RhsTiming timing_;
-  bool implicit_viscosity_ = false;
-  std::vector<bool> viscous_;                   // per term (sorted order): a viscosity term
-  std::vector<double> visc_u_, visc_v_;         // IMEX: viscous acceleration of the last eval
+  std::vector<double> implicit_u_, implicit_v_;  // IMEX: f_I's acceleration of the last eval
   std::vector<double> keep_u_, keep_v_, keep_ud_, keep_vd_, keep_du_, keep_dv_;  // scratch of viscous_acceleration
   std::vector<double> probe_u_, probe_v_;
 };

@@ -16,6 +16,9 @@ struct FluidFields {
   double t = 0;
   const Kernel* kernel = nullptr;
   PairList pairs;
+  // Whether the force terms may take the plain pair loops where these fields allow them
+  // (rhs/particle_term.hpp); false: the general loops always (the same bits, which tests compare).
+  bool allow_plain_pairs = true;
 
   // All points (real then ghosts).
   std::vector<double> x, y;    // positions

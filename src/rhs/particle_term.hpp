@@ -4,7 +4,7 @@
 //   template <class C, class Neighbors> void particle(...)
 // with nb.for_pairs_split(C{}, body): split sums, two pairs at a time for PlainPairs; see
 // neighbors/split_sum.hpp). The term then runs either over the stored pair list (apply: one parallel
-// loop of its own) or inside the evaluator's force sweep from a gathered Neighborhood
+// loop of its own) or inside the force sweep (rhs/neighbor_cache.hpp) from a gathered Neighborhood
 // (apply_particle), with the same arithmetic in the same order.
 #pragma once
 #include "neighbors/neighborhood.hpp"
@@ -36,10 +36,10 @@ struct GeneralPairs {
 struct PlainPairs {
   static constexpr bool plain = true;
 };
-// Tests turn the plain loops off to compare them with the general ones (same bits expected).
-inline bool g_allow_plain_pairs = true;
+// The plain loops where the fields allow them and f.allow_plain_pairs (tests turn it off to compare
+// the plain loops with the general ones: same bits expected).
 inline bool plain_pairs(const FluidFields& f) {
-  return g_allow_plain_pairs && f.dim == 2 && f.correction == FluidFields::Correction::none && f.p_avg.empty();
+  return f.allow_plain_pairs && f.dim == 2 && f.correction == FluidFields::Correction::none && f.p_avg.empty();
 }
 template <class C>
 bool two_d(const FluidFields& f) {

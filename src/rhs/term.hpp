@@ -3,7 +3,9 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <utility>
 
+#include "core/registry.hpp"
 #include "neighbors/neighborhood.hpp"
 #include "rhs/fluid_fields.hpp"
 
@@ -28,6 +30,20 @@ class Term {
   // Whether apply_particle reads W_ab other than through corrected_gradient (which needs it only
   // when a kernel correction is on). The sweep skips W when no term needs it.
   virtual bool reads_kernel_value() const { return true; }
+  // The traits of the registered part that built the term (core/registry.hpp), set by
+  // terms_from_scene; a term built without a part has the default traits.
+  const PartTraits& traits() const { return traits_; }
+  void set_traits(PartTraits traits) { traits_ = std::move(traits); }
+  // Whether the term may go into the implicit partition of an IMEX split (time.imex): it adds only
+  // to dudt, dvdt, and affinely in the velocities (the viscous terms).
+  bool can_be_implicit() const { return traits_.can_be_implicit; }
+  // Whether the term needs the velocity gradient at the ghosts themselves, so that a ghost needs its
+  // own full neighbourhood: the ghost layers are then twice the support radius deep (Basa et al.
+  // 2008 §5.2, the two-pass viscosity: stencil depth 2).
+  bool needs_ghost_velocity_gradients() const { return traits_.stencil_depth > 1; }
+
+ private:
+  PartTraits traits_;
 };
 
 }  // namespace arksph

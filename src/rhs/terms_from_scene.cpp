@@ -11,6 +11,13 @@
 
 namespace arksph {
 namespace {
+// The term of a registered part, carrying the part's traits.
+std::unique_ptr<Term> build(const Part<TermFactory>& part, const Scene& scene) {
+  std::unique_ptr<Term> term = part.make(scene);
+  term->set_traits(part.traits);
+  return term;
+}
+
 bool is_zero_force(const std::vector<std::string>& expr) {
   for (const auto& e : expr) {
     Expression ex(e, {"x", "y", "t"});
@@ -41,7 +48,7 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
   const bool wcsph = scheme_traits(scene.scheme).weakly_compressible;
   if (scene.density_mode == "summation") terms.push_back(make_density_summation());
   // Basa et al. 2008 §4: corrected kernel gradients for the pressure and viscous terms.
-  if (auto make = kernel_corrections().at(scene.kernel_correction).make) terms.push_back(make(scene));
+  if (const auto& part = kernel_corrections().at(scene.kernel_correction); part.make) terms.push_back(build(part, scene));
   if (wcsph) {
     if (scene.equation_of_state == "ideal_gas") {
       terms.push_back(make_eos_ideal_gas(scene.gas_gamma));
@@ -50,10 +57,10 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
       terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma, scene.background_pressure));
     }
     if (scene.pressure_reduction) terms.push_back(make_pressure_reduction());  // Basa eq. 20
-    terms.push_back(pressure_gradients().at(scene.pressure_gradient).make(scene));
+    terms.push_back(build(pressure_gradients().at(scene.pressure_gradient), scene));
     if (scene.density_mode == "continuity") terms.push_back(make_continuity());
   }
-  if (scene.viscosity > 0) terms.push_back(viscosity_models().at(scene.viscosity_model).make(scene));
+  if (scene.viscosity > 0) terms.push_back(build(viscosity_models().at(scene.viscosity_model), scene));
   if (!is_zero_force(scene.body_force)) terms.push_back(make_body_force(scene.body_force));
   return terms;
 }

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "boundary/wall_velocity_rules.hpp"
 #include "core/errors.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
@@ -32,7 +34,7 @@ Model build_model(const Scene& scene) {
   const SchemeTraits& scheme = scheme_traits(scene.scheme);
   if (scheme.weakly_compressible) model.sound_speed = resolve_sound_speed(scene, u0max);
   // Ideal gas (Basa eq. 12): p = (gamma - 1) rho e; e(0) gives the sound speed sqrt(gamma p / rho) = c.
-  if (scene.equation_of_state == "ideal_gas")
+  if (equations_of_state().at(scene.equation_of_state).traits.adds_state("energy"))
     model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));
   auto terms = terms_from_scene(scene, model.sound_speed);
   for (const auto& t : terms) model.terms.push_back(t->name());
@@ -42,9 +44,8 @@ Model build_model(const Scene& scene) {
     if (scene.sides[s].kind == SideKind::periodic) periodic = true;
   }
   if (walls) model.terms.push_back(scene.free_slip_divergence ? "walls:ghost+free_slip_divergence" : "walls:ghost");
-  if (walls && scene.wall_velocity == "linear" && scene.dimension == 2) model.terms.push_back("walls:linear_velocity");
-  if (walls && scene.wall_velocity == "quadratic" && scene.dimension == 2)
-    model.terms.push_back("walls:quadratic_velocity");
+  if (walls && scene.dimension == 2 && wall_velocity_rules().at(scene.wall_velocity).make)
+    model.terms.push_back("walls:" + scene.wall_velocity + "_velocity");
   if (walls && scene.wall_particles && scene.dimension == 2) model.terms.push_back("walls:wall_particles");
   if (periodic) model.terms.push_back("periodic:images");
   model.terms.push_back("kernel:" + scene.kernel);

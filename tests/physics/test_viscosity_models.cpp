@@ -17,6 +17,7 @@
 #include "run/setup.hpp"
 #include "io/names.hpp"
 #include "io/scene_reader.hpp"
+#include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 #include "test_support.hpp"
 
@@ -215,10 +216,34 @@ TEST_CASE("viscosity models: cleary scales with xi (pair weight 2 xi nu / rho, B
 
 TEST_CASE("viscosity models: two_pass doubles the ghost depth (Basa §5.2)") {
   std::ostringstream w;
-  const Scene one = read_scene_text(kChannel, "test", {"method.viscosity_model=morris"}, w);
-  const Scene two = read_scene_text(kChannel, "test", {"method.viscosity_model=two_pass"}, w);
-  CHECK(ghost_depth(one, 3.0) == doctest::Approx(3.0));
-  CHECK(ghost_depth(two, 3.0) == doctest::Approx(6.0));
+  const Model one = build_model(read_scene_text(kChannel, "test", {"method.viscosity_model=morris"}, w));
+  const Model two = build_model(read_scene_text(kChannel, "test", {"method.viscosity_model=two_pass"}, w));
+  const double R = one.rhs->kernel().radius();
+  CHECK(one.rhs->ghost_depth() == doctest::Approx(R));
+  CHECK(two.rhs->ghost_depth() == doctest::Approx(2.0 * R));
+}
+
+// The IMEX split puts exactly the viscous terms into the implicit partition (Term::can_be_implicit),
+// whatever the model, and only the models of stencil depth 2 ask for ghost velocity gradients; the
+// term instances agree with their registered traits.
+TEST_CASE("viscosity models: the viscous terms, and only they, can be implicit") {
+  std::ostringstream w;
+  for (const std::string& m : registered_names("viscosity_model")) {
+    CAPTURE(m);
+    const Scene scene = read_scene_text(kChannel, "test", {"method.viscosity_model=" + m}, w);
+    const auto& traits = viscosity_models().at(m).traits;
+    const auto terms = terms_from_scene(scene, 10.0);
+    int implicit = 0;
+    for (const auto& t : terms) {
+      CAPTURE(t->name());
+      const bool viscous = t->name().rfind("viscosity:", 0) == 0;
+      CHECK(t->can_be_implicit() == viscous);
+      CHECK(t->needs_ghost_velocity_gradients() == (viscous && traits.stencil_depth > 1));
+      if (viscous) CHECK(t->can_be_implicit() == traits.can_be_implicit);
+      implicit += t->can_be_implicit() ? 1 : 0;
+    }
+    CHECK(implicit == 1);
+  }
 }
 
 namespace {

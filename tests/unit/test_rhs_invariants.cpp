@@ -11,7 +11,6 @@
 
 #include "doctest/doctest.h"
 #include "io/scene_reader.hpp"
-#include "rhs/particle_term.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -166,13 +165,12 @@ TEST_CASE("rhs: the plain pair loops give the general loops' derivatives bit for
                                           {std::string("method.force_sweep=") + (sweep ? "true" : "false")}, std::cerr);
       std::vector<double> out[2];
       for (int plain : {0, 1}) {
-        g_allow_plain_pairs = plain == 1;
         Model model = build_model(scene);
+        model.rhs->set_options({.plain_pair_loops = plain == 1});
         std::vector<double> y = disturbed_state(model);
         out[plain].assign(y.size(), 0.0);
         model.rhs->eval(0.0, y.data(), out[plain].data());
       }
-      g_allow_plain_pairs = true;
       CHECK(std::memcmp(out[0].data(), out[1].data(), out[0].size() * sizeof(double)) == 0);
     }
   }

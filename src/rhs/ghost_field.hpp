@@ -1,0 +1,44 @@
+// The ghost points of the right-hand side (boundary/ghosts.hpp) as the terms see them in
+// FluidFields: appended after the real particles [n_real, n_all) with their positions, masses,
+// sources and reflection signs; velocities from their sources' by the affine maps of the ghost set,
+// then the wall-velocity rule of the scene (boundary.wall_velocity, 2D: linear or quadratic
+// extrapolation, Basa et al. 2008 §6.1.2); density and pressure copied from their sources.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "boundary/wall_velocity_rules.hpp"
+#include "boundary/ghosts.hpp"
+#include "core/scene.hpp"
+#include "rhs/fluid_fields.hpp"
+#include "rhs/term.hpp"
+
+namespace arksph {
+
+class GhostField {
+ public:
+  // Layers as deep as the terms need (ghost_depth): the support radius, or twice that when a term
+  // needs the velocity gradient at the ghosts.
+  GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms);
+  double depth() const { return depth_; }
+
+  // Appends the ghosts of the f.n_real real particles, whose positions and velocities are loaded, to
+  // f and sets f.n_all. With `rebuild`, a new ghost set reaching `skin` further than the layer depth
+  // (so that it stays valid while the particles move less than that), with masses (of the real
+  // particles: `mass`), sources and reflection signs; otherwise the same images moved with their
+  // sources. Velocities as set_velocities; rho and p sized to n_all, ghost values left to copy().
+  void refresh(FluidFields& f, const std::vector<double>& mass, bool rebuild, double skin);
+  // The ghosts' velocities (momentum and divergence copies) from the real particles' in f.
+  void set_velocities(FluidFields& f) const;
+  // field[ghost] = field[its source] for a field of all points (sized to n_all).
+  void copy(std::vector<double>& field) const;
+
+ private:
+  double depth_;
+  GhostBuilder builder_;
+  GhostSet set_;
+  std::size_t n_real_ = 0, n_all_ = 0;  // of the last refresh
+  std::unique_ptr<WallVelocityRule> wall_rule_;  // the scene's boundary.wall_velocity rule (none for "mirror")
+};
+
+}  // namespace arksph

@@ -13,16 +13,13 @@ void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const doub
   double* vel[2] = {u, v};
   for_each_no_slip_wall(scene_, dx_, [&](int side, const WallBins& wb, double w_t) {
     const int k = wb.k, t = wb.t;
-    const double plane = wb.plane;
-    auto bin_of = [&](double c) { return wb.of(c); };
-    const long bins = wb.bins;
     // The fluid particle nearest to the wall in each tangential bin.
-    nearest_.assign(static_cast<std::size_t>(bins), -1);
+    nearest_.assign(wb.count(), -1);
     std::vector<double>& best = best_;
-    best.assign(static_cast<std::size_t>(bins), 2.0 * dx_);
+    best.assign(wb.count(), 2.0 * dx_);
     for (std::size_t a = 0; a < n_real; ++a) {
-      const double d = std::abs(pos[k][a] - plane);
-      const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
+      const double d = std::abs(pos[k][a] - wb.plane);
+      const auto b = wb.of(pos[t][a]);
       if (d < best[b] && d > 1e-6 * dx_) {
         best[b] = d;
         nearest_[b] = static_cast<long>(a);
@@ -31,9 +28,9 @@ void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const doub
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g.wall_side[i] != side) continue;
       const std::size_t gi = n_real + i;
-      const long a = nearest_[static_cast<std::size_t>(bin_of(pos[t][gi]))];
+      const long a = nearest_[wb.of(pos[t][gi])];
       if (a < 0) continue;  // no fluid near this stretch of wall: keep the mirror value
-      const double d_near = std::abs(pos[k][a] - plane);
+      const double d_near = std::abs(pos[k][a] - wb.plane);
       vel[t][gi] = w_t - g.wall_dist[i] / d_near * (vel[t][a] - w_t);
     }
   });

@@ -13,10 +13,7 @@ void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const d
   double* vel[2] = {u, v};
   for_each_no_slip_wall(scene_, dx_, [&](int side, const WallBins& wb, double w_t) {
     const int k = wb.k, t = wb.t;
-    const double plane = wb.plane;
-    auto bin_of = [&](double c) { return wb.of(c); };
-    const long bins = wb.bins;
-    const auto nb = static_cast<std::size_t>(bins);
+    const std::size_t nb = wb.count();
     // Nearest fluid particle in each bin, then the nearest one at least dx/2 further from the wall.
     first_.assign(nb, -1);
     second_.assign(nb, -1);
@@ -25,19 +22,19 @@ void QuadraticWallVelocity::apply(const GhostSet& g, std::size_t n_real, const d
     d1.assign(nb, 3.0 * dx_);
     d2.assign(nb, 4.0 * dx_);
     for (std::size_t a = 0; a < n_real; ++a) {
-      const double d = std::abs(pos[k][a] - plane);
-      const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
+      const double d = std::abs(pos[k][a] - wb.plane);
+      const auto b = wb.of(pos[t][a]);
       if (d < d1[b] && d > 1e-6 * dx_) d1[b] = d, first_[b] = static_cast<long>(a);
     }
     for (std::size_t a = 0; a < n_real; ++a) {
-      const double d = std::abs(pos[k][a] - plane);
-      const auto b = static_cast<std::size_t>(bin_of(pos[t][a]));
+      const double d = std::abs(pos[k][a] - wb.plane);
+      const auto b = wb.of(pos[t][a]);
       if (first_[b] >= 0 && d > d1[b] + 0.5 * dx_ && d < d2[b]) d2[b] = d, second_[b] = static_cast<long>(a);
     }
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g.wall_side[i] != side) continue;
       const std::size_t gi = n_real + i;
-      const auto b = static_cast<std::size_t>(bin_of(pos[t][gi]));
+      const auto b = wb.of(pos[t][gi]);
       const long a1 = first_[b], a2 = second_[b];
       if (a1 < 0) continue;  // no fluid near this stretch of wall: keep the mirror value
       const double s_g = -g.wall_dist[i], e1 = d1[b];

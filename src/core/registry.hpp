@@ -20,8 +20,8 @@ namespace arksph {
 struct PartTraits {
   int stencil_depth = 1;             // neighbour passes: 2 when a part reads its neighbours' gradients
   bool can_be_implicit = false;      // may go into the implicit partition of an IMEX split
-  std::vector<std::string> schemes;  // schemes it applies to (empty: every scheme)
-  std::vector<std::string> state;    // blocks it adds to the ODE state under WCSPH ("density", "energy")
+  std::vector<std::string> schemes{};  // schemes it applies to (empty: every scheme)
+  std::vector<std::string> state{};    // blocks it adds to the ODE state under WCSPH ("density", "energy")
   bool adds_state(const std::string& block) const {
     for (const auto& s : state)
       if (s == block) return true;

@@ -22,6 +22,12 @@ void ViscousSplit::evaluate_at(double t, const double* y) {
   const std::size_t N = rhs_.layout().size();
   fe_.resize(N);
   rhs_.eval(t, y, fe_.data());
+  if (constraint_) {
+    const StateLayout& L = rhs_.layout();
+    fi_.resize(N);
+    rhs_.implicit_part(fi_.data());
+    constraint_(y, fe_.data(), fi_.data() + L.vel(0), L.dim == 2 ? fi_.data() + L.vel(1) : nullptr);
+  }
   y_.assign(y, y + N);
   t_ = t;
   valid_ = true;

@@ -8,6 +8,7 @@
 // the viscous terms over the frozen fields (RhsEvaluator::viscous_acceleration), and J is
 // re-probed only when the frozen part of the state (positions, densities, energies) has changed.
 #pragma once
+#include <functional>
 #include <vector>
 
 #include "core/scene.hpp"
@@ -26,6 +27,13 @@ class ViscousSplit {
   const SparseCsr& jacobian(double t, const double* y);
   ImexFunctions functions();
   const ViscousJacobian& jacobian_builder() const { return jac_; }
+  // A constraint on f_E that must see the whole acceleration (the constrained projection): called
+  // after each full evaluation as constraint(y, f_E, au_I, av_I) with f_I's acceleration.
+  using Constraint = std::function<void(const double* y, double* fe, const double* au, const double* av)>;
+  void set_constraint(Constraint c) {
+    constraint_ = std::move(c);
+    valid_ = false;
+  }
   // Drops every cached evaluation and the Jacobian pattern (the particles were re-ordered).
   void forget() {
     valid_ = false;
@@ -45,6 +53,8 @@ class ViscousSplit {
   std::vector<double> jac_y_;    // the state J was probed at (frozen rows matter)
   const SparseCsr* jac_last_ = nullptr;
   std::vector<double> au_, av_;
+  Constraint constraint_;
+  std::vector<double> fi_;  // f_I of the last full evaluation (for the constraint)
 };
 
 }  // namespace arksph

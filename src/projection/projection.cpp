@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
 
 #include "core/errors.hpp"
 #include "core/param_builder.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
+#include "projection/divergence_operator.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
@@ -20,6 +22,12 @@ double since(std::chrono::steady_clock::time_point t0) {
 
 const std::vector<Param>& projection_params() {
   static const std::vector<Param> params = {
+      choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained"})
+          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y), exact projection, the table's temporal order")
+          .to(&Scene::projection),
+      number("method.constraint_relaxation", 0.0).in(at_least(0)).unit("1/s")
+          .doc("constrained projection: rate at which a divergence left by the time integration decays, d(Du)/dt = -alpha Du")
+          .to(&Scene::constraint_relaxation),
       choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})
           .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; klu only)")
           .to(&Scene::ppe_operator),
@@ -57,9 +65,40 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction != "none") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+  if (scene.projection == "constrained") {
+    constrained_ = std::make_unique<ConstrainedPressure>(scene, rhs);
+    RhsOptions o = rhs_.options();
+    o.pairs_at_every_f = true;  // constrain() walks the pairs of each f
+    rhs_.set_options(o);
+  }
+}
+
+void Projection::constrain(const double* y, double* ydot, const double* au, const double* av) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ConstraintReport rep = constrained_->constrain(y, ydot, au, av);
+  ++stats_.solves;
+  stats_.iterations += rep.iterations;
+  stats_.last_residual = rep.relative_residual;
+  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+  const double s = since(t0);
+  stats_.seconds += s;
+  stats_.solve_seconds += s;
+}
+
+void Projection::project_initial(double t, double* y) {
+  if (!constrained_) return;
+  const ConstraintReport rep = constrained_->project_velocity(t, y);
+  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+}
+
+double Projection::divergence_rms(double t, const double* y) {
+  rhs_.eval(t, y, nullptr);
+  const StateLayout& L = rhs_.layout();
+  return arksph::divergence_rms(rhs_.fields(), y + L.vel(0), L.dim == 2 ? y + L.vel(1) : nullptr);
 }
 
 void Projection::forget_warm_start() {
+  if (constrained_) constrained_->forget_warm_start();
   pressure_.clear();
   solution_.clear();
   solver_ = make_poisson_solver(solver_->name(), tolerance_);
@@ -71,6 +110,7 @@ void Projection::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(solution_, from);
   if (y_prev_.size() == rhs_.layout().size()) permute_state(rhs_.layout(), y_prev_.data(), from);
   if (correction_) correction_->permute_particles(from);
+  if (constrained_) constrained_->permute_particles(from);
   // A solver's stored structure (KLU's symbolic analysis, cg_amg's aggregates) is in the old order.
   solver_ = make_poisson_solver(solver_->name(), tolerance_);
 }

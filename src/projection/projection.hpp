@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "projection/ConstrainedPressure.hpp"
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
@@ -40,6 +41,17 @@ struct ProjectionStats {
 class Projection {
  public:
   Projection(const Scene& scene, RhsEvaluator& rhs);
+  // method.projection = "constrained": the pressure is part of f(t, y) (constrain), nothing is done
+  // after a step or stage, and the initial velocity is projected once (project_initial).
+  bool constrained() const { return constrained_ != nullptr; }
+  // After rhs.eval(t, y, ydot): the pressure acceleration added to ydot (au, av: an acceleration
+  // the constraint must also see, IMEX's implicit partition, or null).
+  void constrain(const double* y, double* ydot, const double* au, const double* av);
+  // The start of a constrained run: u <- P u, so that D u = 0 at t = 0.
+  void project_initial(double t, double* y);
+  // r.m.s. of the divergence D u of the constrained projection (projection/divergence_operator.hpp)
+  // at the state y (fields refreshed here): the measure of incompressibility for every projection.
+  double divergence_rms(double t, const double* y);
   // Remembers the state at the start of the next step (for the centring of eq. 12).
   void begin_step(double t, const double* y);
   // Projects y (the end-of-step state at time t) in place.
@@ -47,9 +59,9 @@ class Projection {
   // The "after each stage" variant: projects the velocities of a stage state z_i at t = t_n + c_i h
   // with dt = c_i h (steps 1-3 only: no centring, no density correction, which act on the step).
   void project_stage(double t, double* y);
-  const std::vector<double>& pressure() const { return pressure_; }
+  const std::vector<double>& pressure() const { return constrained_ ? constrained_->pressure() : pressure_; }
   const ProjectionStats& stats() const { return stats_; }
-  std::string solver_name() const { return grid_ ? "grid-klu" : solver_->name(); }
+  std::string solver_name() const { return grid_ ? "grid-klu" : constrained_ ? constrained_->solver_name() : solver_->name(); }
   const DensityCorrection* correction() const { return correction_.get(); }
   // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
   // factorisation), so that a run restarted from a checkpoint continues bit for bit.
@@ -78,6 +90,7 @@ class Projection {
   PoissonSystem system_;          // the last PPE, kept for its storage
   std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
+  std::unique_ptr<ConstrainedPressure> constrained_;  // only with projection = constrained
   ProjectionStats stats_;
 };
 

@@ -68,7 +68,7 @@ void RhsEvaluator::set_options(const RhsOptions& options) {
   // The pair list is built at every f when some term walks it: a term outside the sweep, or with
   // the IMEX split an implicit term (it runs over the pairs, and the Jacobian's probes walk them
   // many times).
-  pairs_for_terms_ = PairUse::none;
+  pairs_for_terms_ = options_.pairs_at_every_f ? PairUse::repeated : PairUse::none;
   for (std::size_t k = 0; k < terms_.size(); ++k) {
     const Term& t = *terms_[k];
     const bool outside_sweep = !neighbors_.sweeps() || !t.per_particle() || (options_.imex_split && implicit_[k]);

@@ -30,6 +30,9 @@ struct RhsOptions {
   // The plain pair loops where the fields allow them (rhs/particle_term.hpp). Off, the general loops
   // always: they give the same bits, which the tests compare.
   bool plain_pair_loops = true;
+  // The pair list stored at every f, for a caller that walks fields().pairs after eval(t, y, ydot)
+  // (the constrained projection).
+  bool pairs_at_every_f = false;
 };
 
 class RhsEvaluator {

@@ -82,7 +82,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     return stable_step(scene, model, max_speed_of(layout, y), rhs.max_acceleration());
   };
   eo.initial_dt = stable_step(scene, model, max_speed_of(layout, y0.data()), rhs.max_acceleration());
-  if (model.projection) {
+  if (model.projection && !model.projection->constrained()) {
     Projection* proj = model.projection.get();
     eo.postprocess = [proj](double t, double* y) { proj->project(t, y); };
     if (scene.projection_points == "stages") eo.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
@@ -93,7 +93,9 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     rhs.invalidate_neighbors();
   }
   const long diag_evals_before = rhs.evaluations();
-  TimeStepper stepper = make_time_stepper(scene, rhs, eo, y0, checkpoints.start_time());
+  // A constrained projection starts from a divergence-free velocity (a restart already is).
+  if (model.projection && !checkpoints.restarting()) model.projection->project_initial(0.0, y0.data());
+  TimeStepper stepper = make_time_stepper(scene, rhs, eo, y0, checkpoints.start_time(), model.projection.get());
   TimeIntegrator& integrator = *stepper.integrator;
   integrator.set_counter_offset(checkpoints.counters());
   if (integrator.workaround_installed()) out.add_term("erkstep:fsal_bug_workaround");

@@ -9,6 +9,7 @@
 #include "integrate/imex_integrator.hpp"
 #include "integrate/time_integrator.hpp"
 #include "integrate/viscous_split.hpp"
+#include "projection/projection.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
@@ -20,8 +21,10 @@ struct TimeStepper {
 
 // `eo`: the ERK options of the run (integrator_options plus stability limit, first step and
 // projection callbacks); the IMEX integrator takes its step control from it (no post-processing:
-// time.imex is wcsph only).
+// under IMEX a projection must be constrained).
+// `projection`: the run's projection, or null; a constrained one (Projection::constrained) becomes
+// part of f (ERK) or of f_E (IMEX), where it sees the whole acceleration.
 TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
-                              double t0);
+                              double t0, Projection* projection = nullptr);
 
 }  // namespace arksph

@@ -55,10 +55,12 @@ std::vector<double> run_scene(const Scene& base, const std::string& table, doubl
   o.rtol = scene.rtol;  // fixed steps: no error control; IMEX: the Newton tolerance scales with these
   o.atol = scene.atol;
   Projection* proj = model.projection.get();
+  if (proj) proj->project_initial(0.0, y0.data());
+  if (proj && proj->constrained()) proj = nullptr;  // part of f: nothing after a step
   if (proj) o.postprocess = [proj](double t, double* y) { proj->project(t, y); };
   if (proj && scene.projection_points == "stages")
     o.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
-  TimeStepper stepper = make_time_stepper(scene, *model.rhs, o, y0, 0.0);
+  TimeStepper stepper = make_time_stepper(scene, *model.rhs, o, y0, 0.0, model.projection.get());
   TimeIntegrator& integ = *stepper.integrator;
   double t = 0;
   while (t < scene.end) {  // the run loop's step: remember r^n for the centring, step, project

@@ -1,0 +1,109 @@
+#include "projection/ConstrainedPressure.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/particle_order.hpp"
+#include "projection/divergence_operator.hpp"
+
+namespace arksph {
+
+ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
+    : rhs_(rhs),
+      solver_key_(scene.ppe_solver),
+      tolerance_(scene.ppe_tolerance),
+      relaxation_(scene.constraint_relaxation),
+      zero_min_level_(scene.ppe_pressure_level == "zero_min"),
+      solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)) {}
+
+void ConstrainedPressure::forget_warm_start() {
+  p_.clear();
+  solution_.clear();
+  solver_ = make_poisson_solver(solver_key_, tolerance_);
+}
+
+void ConstrainedPressure::permute_particles(const std::vector<std::uint32_t>& from) {
+  permute(p_, from);
+  permute(solution_, from);
+  solver_ = make_poisson_solver(solver_key_, tolerance_);  // its stored structure is in the old order
+}
+
+ConstraintReport ConstrainedPressure::solve_pressure(const std::vector<double>& w_div) {
+  const FluidFields& f = rhs_.fields();
+  const std::size_t n = f.n_real;
+  assemble_ppe(f, w_div, 1.0, system_);
+  if (solution_.size() != n) solution_.assign(n, 0.0);
+  const SolveReport rep = solver_->solve(system_.A, system_.b, solution_);
+  const double level = zero_min_level_ ? *std::min_element(solution_.begin(), solution_.end())
+                                       : std::accumulate(solution_.begin(), solution_.end(), 0.0) / static_cast<double>(n);
+  p_.resize(n);
+  for (std::size_t a = 0; a < n; ++a) p_[a] = solution_[a] - level;
+  return {rep.iterations, rep.relative_residual};
+}
+
+void ConstrainedPressure::pressure_gradient(const std::vector<double>& p) {
+  const FluidFields& f = rhs_.fields();
+  const std::size_t n = f.n_real;
+  gx_.resize(n);
+  gy_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    const double pa = p[a] / (f.rho[a] * f.rho[a]);
+    double sx = 0, sy = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const double c = f.m[b] * (p[f.src[b]] / (f.rho[b] * f.rho[b]) + pa) * F;
+      sx += c * rx;
+      sy += c * ry;
+    });
+    gx_[a] = sx;
+    gy_[a] = sy;
+  }
+}
+
+ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, const double* au, const double* av) {
+  const FluidFields& f = rhs_.fields();
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
+  const double* u = y + L.vel(0);
+  const double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+  // w = a* - c + alpha u
+  wx_.resize(n);
+  wy_.resize(n);
+  convective_acceleration(f, u, v, wx_.data(), wy_.data());
+  for (std::size_t a = 0; a < n; ++a) {
+    wx_[a] = ydot[L.vel(0) + a] + (au ? au[a] : 0.0) - wx_[a] + relaxation_ * u[a];
+    if (v) wy_[a] = ydot[L.vel(1) + a] + (av ? av[a] : 0.0) - wy_[a] + relaxation_ * v[a];
+  }
+  div_.resize(n);
+  difference_divergence(f, wx_.data(), wy_.data(), div_.data());
+  const ConstraintReport rep = solve_pressure(div_);
+  pressure_gradient(p_);
+  for (std::size_t a = 0; a < n; ++a) {
+    ydot[L.vel(0) + a] -= gx_[a];
+    if (v) ydot[L.vel(1) + a] -= gy_[a];
+  }
+  return rep;
+}
+
+ConstraintReport ConstrainedPressure::project_velocity(double t, double* y) {
+  rhs_.eval(t, y, nullptr);
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
+  double* u = y + L.vel(0);
+  double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+  div_.resize(n);
+  difference_divergence(rhs_.fields(), u, v, div_.data());
+  const std::vector<double> keep_p = p_, keep_solution = solution_;
+  solution_.assign(n, 0.0);  // phi is a potential, not the pressure: the pressure's warm start kept apart
+  const ConstraintReport rep = solve_pressure(div_);
+  pressure_gradient(p_);
+  for (std::size_t a = 0; a < n; ++a) {
+    u[a] -= gx_[a];
+    if (v) v[a] -= gy_[a];
+  }
+  p_ = keep_p;
+  solution_ = keep_solution;
+  return rep;
+}
+
+}  // namespace arksph

@@ -1,0 +1,73 @@
+// The constrained projection (method.projection = "constrained"): the pressure is solved inside
+// f(t, y), so that ARKODE integrates one ODE whose every stage carries its own pressure, and the
+// table's order holds for the velocity and the pressure alike.
+//
+// With D the difference-form divergence (projection/divergence_operator.hpp), L the approximate
+// Laplacian of Cummins & Rudman eq. 19 (projection/ppe_assembly.hpp), G their symmetric pressure
+// gradient (C&R eq. 11) and a* the acceleration of every other term (viscosity, body force; under
+// IMEX both partitions), f returns
+//
+//   dr/dt = u,   du/dt = a* - G p,   L p = D (a* - c + alpha u),
+//
+// where c = (u . grad) u is the convective acceleration (convective_acceleration). Along the ODE,
+// d(D u)/dt = D du/dt - D c for a divergence-free flow (tr(grad u grad u) = div((u . grad) u)), so
+// where L = D G the divergence obeys d(D u)/dt = -alpha D u: a divergence-free start stays so, and
+// what the time integration or L's approximation leaves is damped at the rate alpha
+// (method.constraint_relaxation; Baumgarte's stabilisation of an index-reduced constraint). The
+// pressure is the discrete counterpart of div(grad p / rho) = div(a*) - tr(grad u grad u).
+//
+// This is the route of Matsunaga (2025): the pressure equation written along the particle
+// trajectories, so that explicit Runge-Kutta applies to the whole system; with C&R's compact L it
+// is the projection of the velocity increment that Almgren, Bell & Crutchfield (2000) recommend for
+// approximate projections, applied at every stage. p is a smooth function of the state (its level
+// fixed by method.ppe_pressure_level = "zero_mean"), so it converges at the velocity's order.
+//
+// The exact orthogonal projection I - G (D G)^-1 D with G = -M^-1 D^T V (DivergenceOperator) is
+// idempotent, but D G decouples odd and even particles: on a perturbed lattice it has near-null
+// modes, and a constraint imposed through it moves the velocity by O(|u|) (docs/methods/isph.md).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "projection/poisson_solver.hpp"
+#include "projection/ppe_assembly.hpp"
+#include "rhs/evaluator.hpp"
+
+namespace arksph {
+
+struct ConstraintReport {
+  int iterations = 0;
+  double relative_residual = 0;
+};
+
+class ConstrainedPressure {
+ public:
+  ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs);
+  // After rhs.eval(t, y, ydot): adds -G p to the velocity block of ydot. (au, av): an acceleration
+  // not in ydot that the constraint must see (IMEX: the implicit partition), or null.
+  ConstraintReport constrain(const double* y, double* ydot, const double* au, const double* av);
+  // u <- u - G phi with L phi = D u (one approximate projection of the start), fields refreshed here.
+  ConstraintReport project_velocity(double t, double* y);
+  const std::vector<double>& pressure() const { return p_; }
+  std::string solver_name() const { return solver_->name(); }
+  void forget_warm_start();
+  void permute_particles(const std::vector<std::uint32_t>& from);
+
+ private:
+  // p_ from L p = w_div (source w_div), at the fields of the last eval; returns the solver's report.
+  ConstraintReport solve_pressure(const std::vector<double>& w_div);
+  // (gx, gy) = G p_ (C&R eq. 11: sum_b m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab).
+  void pressure_gradient(const std::vector<double>& p);
+
+  RhsEvaluator& rhs_;
+  std::string solver_key_;
+  double tolerance_;
+  double relaxation_;
+  bool zero_min_level_;
+  std::unique_ptr<PoissonSolver> solver_;
+  PoissonSystem system_;
+  std::vector<double> p_, solution_, div_, gx_, gy_, wx_, wy_;
+};
+
+}  // namespace arksph

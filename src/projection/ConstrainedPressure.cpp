@@ -66,16 +66,17 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
   const std::size_t n = L.n;
   const double* u = y + L.vel(0);
   const double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-  // w = a* - c + alpha u
+  // L p = D (a* + alpha u) - Q
   wx_.resize(n);
   wy_.resize(n);
-  convective_acceleration(f, u, v, wx_.data(), wy_.data());
   for (std::size_t a = 0; a < n; ++a) {
-    wx_[a] = ydot[L.vel(0) + a] + (au ? au[a] : 0.0) - wx_[a] + relaxation_ * u[a];
-    if (v) wy_[a] = ydot[L.vel(1) + a] + (av ? av[a] : 0.0) - wy_[a] + relaxation_ * v[a];
+    wx_[a] = ydot[L.vel(0) + a] + (au ? au[a] : 0.0) + relaxation_ * u[a];
+    if (v) wy_[a] = ydot[L.vel(1) + a] + (av ? av[a] : 0.0) + relaxation_ * v[a];
   }
   div_.resize(n);
   difference_divergence(f, wx_.data(), wy_.data(), div_.data());
+  const std::vector<double> q = divergence_rate_of_motion(f, u, v);
+  for (std::size_t a = 0; a < n; ++a) div_[a] -= q[a];
   const ConstraintReport rep = solve_pressure(div_);
   pressure_gradient(p_);
   for (std::size_t a = 0; a < n; ++a) {

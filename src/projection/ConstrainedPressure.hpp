@@ -7,14 +7,18 @@
 // gradient (C&R eq. 11) and a* the acceleration of every other term (viscosity, body force; under
 // IMEX both partitions), f returns
 //
-//   dr/dt = u,   du/dt = a* - G p,   L p = D (a* - c + alpha u),
+//   dr/dt = u,   du/dt = a* - G p,   L p = D (a* + alpha u) - Q,
 //
-// where c = (u . grad) u is the convective acceleration (convective_acceleration). Along the ODE,
-// d(D u)/dt = D du/dt - D c for a divergence-free flow (tr(grad u grad u) = div((u . grad) u)), so
-// where L = D G the divergence obeys d(D u)/dt = -alpha D u: a divergence-free start stays so, and
-// what the time integration or L's approximation leaves is damped at the rate alpha
-// (method.constraint_relaxation; Baumgarte's stabilisation of an index-reduced constraint). The
-// pressure is the discrete counterpart of div(grad p / rho) = div(a*) - tr(grad u grad u).
+// where Q is exactly the part of d(D u)/dt that the particles' motion makes
+// (divergence_rate_of_motion: d(D u)/dt = D du/dt - Q along dr/dt = u). Along the ODE therefore
+//
+//   d(D u)/dt = -alpha D u + (L - D G) p :
+//
+// where L = D G (smooth pressure modes, to the approximation of eq. 19) a divergence-free start
+// stays divergence-free, and what the time integration and L's approximation leave decays at the
+// rate alpha (method.constraint_relaxation; Baumgarte's stabilisation of an index-reduced
+// constraint). The pressure is the discrete counterpart of div(grad p / rho) = div(a*) -
+// tr(grad u grad u) of an incompressible flow.
 //
 // This is the route of Matsunaga (2025): the pressure equation written along the particle
 // trajectories, so that explicit Runge-Kutta applies to the whole system; with C&R's compact L it

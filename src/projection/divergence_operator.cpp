@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "kernels/kernel.hpp"
+
 
 namespace arksph {
 
@@ -91,22 +93,27 @@ void DivergenceOperator::gradient(const double* p, double* gx, double* gy) const
   }
 }
 
-void convective_acceleration(const FluidFields& f, const double* u, const double* v, double* cx, double* cy) {
+std::vector<double> divergence_rate_of_motion(const FluidFields& f, const double* u, const double* v) {
+  std::vector<double> q(f.n_real, 0.0);
+  const Kernel& kernel = *f.kernel;
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < f.n_real; ++a) {
-    const double ua = u[a], va = f.dim == 2 ? v[a] : 0.0;
-    double sx = 0, sy = 0;
-    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+    double s = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double, double F) {
+      if (!(r2 > 0)) return;
       const std::uint32_t src = f.src[b];
       const double ub = flip(f.flip_x, b) * u[src];
       const double vb = f.dim == 2 ? flip(f.flip_y, b) * v[src] : 0.0;
-      const double w = f.m[b] / f.rho[b] * F * (ua * rx + va * ry);  // V_b u_a . grad_a W_ab
-      sx += w * (ub - ua);
-      sy += w * (vb - va);
+      const double dux = u[a] - ub, duy = f.dim == 2 ? v[a] - vb : 0.0;
+      const double r = std::sqrt(r2);
+      const double along = (dux * rx + duy * ry) / r;
+      // u^T H u = W'' (u . rhat)^2 + (W'/r) (|u|^2 - (u . rhat)^2)
+      const double quad = kernel.d2Wdr2(r) * along * along + F * (dux * dux + duy * duy - along * along);
+      s += f.m[b] / f.rho[b] * quad;
     });
-    cx[a] = sx;
-    if (f.dim == 2) cy[a] = sy;
+    q[a] = s;
   }
+  return q;
 }
 
 void difference_divergence(const FluidFields& f, const double* wx, const double* wy, double* out) {

@@ -54,17 +54,16 @@ class DivergenceOperator {
   bool k_built_ = false;
 };
 
+// Q_a = sum_b V_b u_ab^T H_ab u_ab, u_ab = u_a - u_b (wall images: reflected velocities), H_ab the
+// Hessian of W at r_ab: exactly the part of d(D u)/dt that the particles' motion makes,
+// d(D u)/dt = D (du/dt) - Q along dr/dt = u with constant volumes (the discrete counterpart of
+// div(du/dt) - tr(grad u grad u)).
+std::vector<double> divergence_rate_of_motion(const FluidFields& f, const double* u, const double* v);
+
 // out = D w, pair by pair (no matrix): the divergence of the constrained projection's source and of
 // the run's incompressibility measure.
 void difference_divergence(const FluidFields& f, const double* wx, const double* wy, double* out);
 // r.m.s. of D u over the real particles, volume weighted.
 double divergence_rms(const FluidFields& f, const double* u, const double* v);
-
-// c_a = sum_b V_b (u_b - u_a) (u_a . grad_a W_ab): the convective acceleration (u . grad) u in the
-// same difference form as D (wall images with reflected velocities). For a divergence-free flow
-// tr(grad u grad u) = div((u . grad) u), so D c is the discrete rate at which D u changes as the
-// particles move, d(D u)/dt = D (du/dt) - D c, and it lies in the range of D: the pressure equation
-// built on it is always solvable.
-void convective_acceleration(const FluidFields& f, const double* u, const double* v, double* cx, double* cy);
 
 }  // namespace arksph

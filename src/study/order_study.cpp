@@ -17,6 +17,7 @@
 #include "io/names.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "io/scene_reader.hpp"
+#include "projection/divergence_operator.hpp"
 #include "study/reference_error.hpp"
 #include "study/study_file.hpp"
 
@@ -42,7 +43,37 @@ constexpr const char* kImexPrefix = "imex:";
 bool is_imex(const std::string& table) { return table.rfind(kImexPrefix, 0) == 0; }
 std::string pair_of(const std::string& table) { return table.substr(std::string(kImexPrefix).size()); }
 
-std::vector<double> run_scene(const Scene& base, const std::string& table, double dt, long* rhs_evals) {
+// The end of one run: the ODE state, the pressure of that state and the r.m.s. of D u.
+struct RunEnd {
+  std::vector<double> state;
+  std::vector<double> pressure;
+  double divergence = 0;
+};
+
+// The pressure at the end state: under the constrained projection the one f computes there (the
+// split's f_E under IMEX, which sees the implicit partition), under C&R the last projection's, under
+// WCSPH the equation of state's.
+std::vector<double> end_pressure(Model& model, TimeStepper& stepper, double t, const double* y) {
+  RhsEvaluator& rhs = *model.rhs;
+  const std::size_t n = rhs.layout().n;
+  Projection* proj = model.projection.get();
+  if (proj && proj->constrained()) {
+    std::vector<double> yd(rhs.layout().size());
+    if (stepper.split) {
+      stepper.split->forget();
+      stepper.split->explicit_rhs(t, y, yd.data());
+    } else {
+      rhs.eval(t, y, yd.data());
+      proj->constrain(y, yd.data(), nullptr, nullptr);
+    }
+    return proj->pressure();
+  }
+  if (proj) return proj->pressure();
+  rhs.eval(t, y, nullptr);
+  return {rhs.fields().p.begin(), rhs.fields().p.begin() + static_cast<long>(n)};
+}
+
+RunEnd run_scene(const Scene& base, const std::string& table, double dt, long* rhs_evals) {
   Scene scene = base;  // an ERK table runs explicitly, an IMEX pair with the viscous term implicit
   scene.imex = is_imex(table);
   if (scene.imex) scene.imex_pair = pair_of(table);
@@ -68,16 +99,24 @@ std::vector<double> run_scene(const Scene& base, const std::string& table, doubl
     t = integ.step(scene.end);
   }
   if (rhs_evals) *rhs_evals = integ.stats().rhs_evals + integ.stats().implicit_rhs_evals;
-  return {integ.state(), integ.state() + integ.size()};
+  RunEnd end;
+  end.state.assign(integ.state(), integ.state() + integ.size());
+  end.pressure = end_pressure(model, stepper, t, end.state.data());
+  const StateLayout& L = model.rhs->layout();
+  model.rhs->eval(t, end.state.data(), nullptr);
+  end.divergence = divergence_rms(model.rhs->fields(), end.state.data() + L.vel(0),
+                                  L.dim == 2 ? end.state.data() + L.vel(1) : nullptr);
+  return end;
 }
 
 int nominal_order(const std::string& table) {
   return is_imex(table) ? imex_pair_order(pair_of(table)) : erk_table_order(table);
 }
 
-double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
+double max_diff(const std::vector<double>& a, const std::vector<double>& b, std::size_t first = 0,
+                std::size_t last = static_cast<std::size_t>(-1)) {
   double m = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  for (std::size_t i = first; i < std::min({a.size(), b.size(), last}); ++i) m = std::max(m, std::abs(a[i] - b[i]));
   return m;
 }
 
@@ -182,17 +221,14 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     for (double dt : study.dt_for.count(table) ? study.dt_for.at(table) : study.dt) dt_min_all = std::min(dt_min_all, dt);
   const bool analytic = study.reference == "analytic";
   std::unique_ptr<AnalyticVelocity> exact;
-  StateLayout layout;
-  if (analytic) {
-    exact = std::make_unique<AnalyticVelocity>(study.analytic_velocity[0], study.analytic_velocity[1]);
-    layout = build_model(scene).rhs->layout();
-  }
+  const StateLayout layout = build_model(scene).rhs->layout();
+  if (analytic) exact = std::make_unique<AnalyticVelocity>(study.analytic_velocity[0], study.analytic_velocity[1]);
   // The analytic mode's error: max over the particles of |u_a - u_exact(r_a, t_end)|.
   const auto analytic_error = [&](const std::vector<double>& y) {
     const std::vector<double> ones(layout.n, 1.0);
     return errors_against_analytic(velocities_of(layout, y.data(), ones, ones), *exact, scene.end).linf;
   };
-  std::vector<double> shared_ref;
+  RunEnd shared_ref;
   if (!study.reference_table.empty() && !analytic) {
     shared_ref = run_scene(scene, study.reference_table, dt_min_all / study.reference_dt_divisor, nullptr);
     if (log)
@@ -205,21 +241,30 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     fit.nominal = nominal_order(table);
     const auto& steps = study.dt_for.count(table) ? study.dt_for.at(table) : study.dt;
     const double dt_min = *std::min_element(steps.begin(), steps.end());
-    const std::vector<double> ref =  // else each table is its own reference at its smallest step / divisor
-        analytic                        ? std::vector<double>{}
+    const RunEnd ref =  // else each table is its own reference at its smallest step / divisor
+        analytic                        ? RunEnd{}
         : study.reference_table.empty() ? run_scene(scene, table, dt_min / study.reference_dt_divisor, nullptr)
                                         : shared_ref;
-    std::vector<double> xs, ys;
+    std::vector<double> xs, ys, yu, yp;
+    const std::size_t v0 = layout.vel(0), v1 = layout.vel(0) + static_cast<std::size_t>(layout.dim) * layout.n;
     for (double dt : steps) {
       OrderPoint p;
       p.dt = dt;
-      const std::vector<double> y = run_scene(scene, table, dt, &p.rhs_evals);
-      p.error = analytic ? analytic_error(y) : max_diff(y, ref);
-      if (log) std::fprintf(stderr, "order: %-32s dt %-10.4g error %.4e\n", table.c_str(), dt, p.error);
+      const RunEnd end = run_scene(scene, table, dt, &p.rhs_evals);
+      p.error = analytic ? analytic_error(end.state) : max_diff(end.state, ref.state);
+      p.velocity_error = analytic ? p.error : max_diff(end.state, ref.state, v0, v1);
+      p.pressure_error = analytic ? 0.0 : max_diff(end.pressure, ref.pressure);
+      p.divergence = end.divergence;
+      if (log)
+        std::fprintf(stderr, "order: %-32s dt %-10.4g error %.4e  velocity %.4e  pressure %.4e  |Du| %.3e\n",
+                     table.c_str(), dt, p.error, p.velocity_error, p.pressure_error, p.divergence);
       fit.points.push_back(p);
       xs.push_back(dt), ys.push_back(std::max(p.error, 1e-300));
+      yu.push_back(std::max(p.velocity_error, 1e-300)), yp.push_back(std::max(p.pressure_error, 1e-300));
     }
     fit.observed = loglog_slope(xs, ys);
+    fit.observed_velocity = loglog_slope(xs, yu);
+    fit.observed_pressure = analytic ? 0.0 : loglog_slope(xs, yp);
     fit.flagged = !(std::abs(fit.observed - fit.nominal) <= study.tolerance);
     if (log)
       std::fprintf(stderr, "order: %-32s nominal %d observed %.3f%s\n", table.c_str(), fit.nominal, fit.observed,
@@ -239,20 +284,27 @@ int cmd_order_study(const StudyArgs& args) {
   {
     std::ofstream e(err_csv), f(fit_csv);
     if (!e || !f) throw InputError(study.output + ": cannot write the study output");
-    e << "table,nominal_order,dt,error,rhs_evals\n";
-    f << "table,nominal_order,observed_order,tolerance,flag,fsal_bug_workaround\n";
+    e << "table,nominal_order,dt,error,rhs_evals,velocity_error,pressure_error,divergence_rms\n";
+    f << "table,nominal_order,observed_order,tolerance,flag,fsal_bug_workaround,velocity_order,pressure_order,"
+         "divergence_rms\n";
     e.precision(10), f.precision(6);
     for (const auto& fit : fits) {
       for (const auto& p : fit.points)
-        e << fit.table << "," << fit.nominal << "," << p.dt << "," << p.error << "," << p.rhs_evals << "\n";
+        e << fit.table << "," << fit.nominal << "," << p.dt << "," << p.error << "," << p.rhs_evals << ","
+          << p.velocity_error << "," << p.pressure_error << "," << p.divergence << "\n";
       f << fit.table << "," << fit.nominal << "," << fit.observed << "," << study.tolerance << ","
-        << (fit.flagged ? "FLAG" : "ok") << "," << (!is_imex(fit.table) && erk_table_has_fsal_bug(fit.table) ? 1 : 0) << "\n";
+        << (fit.flagged ? "FLAG" : "ok") << "," << (!is_imex(fit.table) && erk_table_has_fsal_bug(fit.table) ? 1 : 0)
+        << "," << fit.observed_velocity << "," << fit.observed_pressure << ","
+        << (fit.points.empty() ? 0.0 : fit.points.back().divergence) << "\n";
     }
   }
-  std::printf("%-32s %8s %9s  %s\n", "table", "nominal", "observed", "flag");
+  std::printf("%-32s %8s %9s %9s %9s %10s  %s\n", "table", "nominal", "observed", "velocity", "pressure", "|Du| end",
+              "flag");
   int flagged = 0;
   for (const auto& fit : fits) {
-    std::printf("%-32s %8d %9.3f  %s\n", fit.table.c_str(), fit.nominal, fit.observed, fit.flagged ? "FLAG" : "ok");
+    std::printf("%-32s %8d %9.3f %9.3f %9.3f %10.3e  %s\n", fit.table.c_str(), fit.nominal, fit.observed,
+                fit.observed_velocity, fit.observed_pressure, fit.points.empty() ? 0.0 : fit.points.back().divergence,
+                fit.flagged ? "FLAG" : "ok");
     flagged += fit.flagged;
   }
   std::printf("errors: %s\nfit: %s\n", err_csv.c_str(), fit_csv.c_str());

@@ -52,12 +52,16 @@ struct OrderStudy {
 struct OrderPoint {
   double dt = 0, error = 0;
   long rhs_evals = 0;
+  double velocity_error = 0;  // max-norm over the velocity block only
+  double pressure_error = 0;  // max-norm of the pressure of the end state (fine_step reference only)
+  double divergence = 0;      // r.m.s. of D u at the end (projection/divergence_operator.hpp)
 };
 
 struct OrderFit {
   std::string table;
   int nominal = 0;
-  double observed = 0;  // least-squares slope
+  double observed = 0;  // least-squares slope (the whole state: the flag)
+  double observed_velocity = 0, observed_pressure = 0;
   bool flagged = false;
   std::vector<OrderPoint> points;
 };

@@ -1,4 +1,5 @@
-// Error types that map to the exit codes (2 bad input, 3 numerical failure).
+// Error types that map to the exit codes (README.md, "Exit codes"): 2 bad input, 3 numerical
+// failure, 5 output could not be written.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -14,5 +15,25 @@ struct InputError : std::runtime_error {
 struct NumericalFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// An output file could not be written (disk full, file size limit, unwritable folder): exit code 5.
+// what() is "cannot write PATH: reason".
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A value as echoed in a message: one line, at most about 200 characters. A longer text is cut
+// and ends in "… (N characters)", so that a 1 MB value or a huge expression does not flood stderr.
+inline std::string echo_value(const std::string& value, std::size_t limit = 200) {
+  std::string s = value.size() > limit ? value.substr(0, limit) : value;
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  if (value.size() > limit) {
+    while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80) s.pop_back();  // whole UTF-8 chars
+    if (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0xC0) s.pop_back();
+    s += "\u2026 (" + std::to_string(value.size()) + " characters)";
+  }
+  return s;
+}
 
 }  // namespace arksph

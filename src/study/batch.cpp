@@ -18,6 +18,7 @@
 
 #include "run/interrupt.hpp"
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_reader.hpp"
 
@@ -116,7 +117,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
   for (const auto& run : sw.runs) {
     std::ostringstream warnings;
     try {
-      read_scene_text(slurp(sw.scene), sw.scene, run.sets, warnings);
+      read_scene_text(read_input_file(sw.scene, "scene"), sw.scene, run.sets, warnings);
     } catch (const InputError& e) {
       throw InputError(sw.source + ": run " + run.name + ": " + e.what());
     }

@@ -101,7 +101,7 @@ int cmd_batch(int argc, char** argv) {
   Sweep sweep = read_sweep_file(sweep_path);
   for (const std::string& set : extra_sets)  // an override of a varied key would silently replace it
     if (const std::string key = varied_key_overridden(sweep, set); !key.empty())
-      throw InputError("--set " + echo_value(set) + ": " + key + " is varied by " + sweep_path +
+      throw InputError("--set " + echo_value(set) + ": " + echo_value(key) + " is varied by " + echo_value(sweep_path) +
                        "; remove it from the sweep's [[vary]] or from --set");
   for (auto& run : sweep.runs) run.sets.insert(run.sets.end(), extra_sets.begin(), extra_sets.end());
   sweep.common_sets.insert(sweep.common_sets.end(), extra_sets.begin(), extra_sets.end());

@@ -102,8 +102,12 @@ OutputFolder::OutputFolder(const std::string& dir, const std::string& source) : 
                      "); wait for it to finish or choose another --out");
   }
   const std::string text = std::to_string(::getpid()) + "\n";
-  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size()))
-    throw OutputError("cannot write " + lock + ": " + std::strerror(errno));
+  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size())) {
+    const int err = errno ? errno : EIO;
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw OutputError("cannot write " + lock + ": " + std::strerror(err));
+  }
 }
 
 OutputFolder::~OutputFolder() {

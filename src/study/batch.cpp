@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "run/interrupt.hpp"
+#include "run/output_folder.hpp"
 #include "core/errors.hpp"
 #include "io/input_file.hpp"
 #include "io/json_reader.hpp"
@@ -123,8 +124,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     }
   }
   std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw InputError(sw.source + ": sweep.output: cannot create " + out + ": " + ec.message());
+  const OutputFolder folder(out, sw.source);  // one batch per folder at a time (exit 2 naming the pid)
 
   BatchResult res;
   res.runs.resize(sw.runs.size());

@@ -124,7 +124,7 @@ Sweep read_sweep_text(const std::string& text, const std::string& source) {
       if (c == '\n') c = ' ';
     throw InputError(msg);
   }
-  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(source + ": " + key + ": " + why); };
+  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(source + ": " + echo_value(key) + ": " + why); };
   for (const auto& [k, v] : root)
     if (k.str() != "sweep" && k.str() != "vary") throw bad(std::string(k.str()), "unknown key (expected [sweep] and [[vary]])");
   const toml::table* sw_tab = root["sweep"].as_table();
@@ -209,11 +209,11 @@ Sweep read_sweep_text(const std::string& text, const std::string& source) {
   if (sw.axes.empty()) throw bad("vary", "no [[vary]] table: nothing to sweep");
   for (const std::string& set : sw.common_sets)
     if (const std::string key = varied_key_overridden(sw, set); !key.empty())
-      throw bad("sweep.set", echo_value(set) + ": " + key + " is varied too; set it in one place only");
+      throw bad("sweep.set", echo_value(set) + ": " + echo_value(key) + " is varied too; set it in one place only");
   for (const auto& ax : sw.axes)
     for (const std::string& key : ax.keys)
       if (overlapping_keys(key, "output.directory"))
-        throw bad("vary", key + ": the batch gives every run its own output folder; it cannot be varied");
+        throw bad("vary", echo_value(key) + ": the batch gives every run its own output folder; it cannot be varied");
   expand(sw);
   return sw;
 }

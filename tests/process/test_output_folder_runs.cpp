@@ -44,24 +44,45 @@ int count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// This process plays a first run in `dir`: it holds the lock and has written its pid into the file.
+// Returns the descriptor (closing it releases the lock).
+int hold_lock(const std::string& dir) {
+  fs::create_directories(dir);
+  const int fd = ::open((dir + "/.arksph.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  REQUIRE(fd >= 0);
+  REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  REQUIRE(::write(fd, pid.data(), pid.size()) == static_cast<ssize_t>(pid.size()));
+  return fd;
+}
+
 }  // namespace
 
 TEST_CASE("output folder: a second run into a folder locked by another run exits 2 naming its pid") {
   ScratchDir scratch("lock");
   const std::string scene = write_scene(scratch), out = scratch / "out";
-  fs::create_directories(out);
-  // This process plays the first run: it holds the lock and has written its pid into the file.
-  const int fd = ::open((out + "/.arksph.lock").c_str(), O_RDWR | O_CREAT, 0644);
-  REQUIRE(fd >= 0);
-  REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+  const int fd = hold_lock(out);
   const std::string pid = std::to_string(::getpid());
-  REQUIRE(::write(fd, (pid + "\n").data(), pid.size() + 1) == static_cast<ssize_t>(pid.size() + 1));
   const RunOutcome o = run_arksph_captured("run " + scene + " --quiet --out " + out, scratch.dir.string());
   CHECK(o.code == 2);
   CHECK(o.err.find("pid " + pid) != std::string::npos);
   CHECK_FALSE(fs::exists(out + "/summary.json"));  // nothing written by the refused run
   ::close(fd);  // released: the same run now goes through
   CHECK(run_arksph_captured("run " + scene + " --quiet --out " + out, scratch.dir.string()).code == 0);
+}
+
+TEST_CASE("output folder: a second batch into a locked batch folder exits 2 naming the pid") {
+  ScratchDir scratch("batch_lock");
+  write_scene(scratch);
+  std::ofstream(scratch / "sweep.toml") << "[sweep]\nscene = \"S.toml\"\n[[vary]]\nkey = \"time.end\"\nvalues = [0.01]\n";
+  const std::string out = scratch / "b";
+  const int fd = hold_lock(out);
+  const RunOutcome o = run_arksph_captured("batch " + (scratch / "sweep.toml") + " --quiet --out " + out,
+                                           scratch.dir.string());
+  CHECK(o.code == 2);
+  CHECK(o.err.find("pid " + std::to_string(::getpid())) != std::string::npos);
+  CHECK_FALSE(fs::exists(out + "/batch.csv"));
+  ::close(fd);
 }
 
 TEST_CASE("output folder: a fresh run removes the frames of an earlier, longer run") {

@@ -287,6 +287,7 @@ void read_array(hid_t group, const std::string& where, const char* name, hid_t m
 
 Checkpoint read_file(const std::string& path) {
   if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("not a regular file");
   if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error("not an HDF5 file (or truncated)");
   Hid file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "H5Fopen");
   if (!has_attr(file, "format") || read_string(file, "format") != kFormatName)

@@ -68,7 +68,8 @@ bool at_or_before(double t, double time) { return t <= time + 1e-9 * std::max(1.
 
 // particles.pvd missing or unreadable: the entries of the particles_NNNNNN.vtp files found before the
 // checkpoint's frame, at the time of the timeseries.csv row of the same index (one row per frame),
-// or at frame * output.every without that row.
+// or at frame * output.every without that row. Warns on stderr, except for a new folder (no
+// collection, no frame).
 void rebuild_collection(OutputHistory& h, const std::string& dir, double every, const char* state) {
   long found = 0;
   for (long k = 0; k < h.frames; ++k) {
@@ -79,6 +80,7 @@ void rebuild_collection(OutputHistory& h, const std::string& dir, double every, 
     h.pvd.emplace_back(t, name);
     ++found;
   }
+  if (found == 0 && std::string(state) == "missing") return;  // a new folder (--out): nothing was lost
   std::fprintf(stderr,
                "arksph: warning: particles.pvd of the earlier run is %s; rebuilt from the %ld particles_*.vtp "
                "frame(s) found before frame %ld\n",

@@ -98,7 +98,7 @@ void Reporter::fail(const std::string& key, const std::string& reason) const {
 }
 
 void Reporter::warn(const std::string& key, const std::string& reason) const {
-  if (warnings_) *warnings_ << one_line(origin(key) + ": " + key + ": " + reason) << '\n';
+  if (warnings_) *warnings_ << one_line(origin(key) + ": " + echo_value(key) + ": " + reason) << '\n';
 }
 
 // ---- Section ----

@@ -47,7 +47,7 @@ std::size_t longest_line(const std::string& s) {
 }  // namespace
 
 // The checkpoint (about 31 kB for 100 particles) does not fit under an 8 kB file size limit, the
-// frames (about 5 kB) do. HDF5 must not be left with a half-closed file (it crashed at exit).
+// frames (about 5 kB) do. HDF5 must not be left with a half-closed file (which it closes again at exit: SIGSEGV).
 TEST_CASE("hostile: a checkpoint that cannot be written exits 5 with the message, no crash, summary.json kept") {
   ScratchDir scratch("ck_full");
   const std::string scene = write_scene(scratch), out = scratch / "out";
@@ -86,8 +86,9 @@ TEST_CASE("hostile: an output folder that cannot be created exits 5 naming outpu
   CHECK(o.err.find("output.directory") != std::string::npos);
 }
 
-// A directory, an endless device and an oversized file are refused at once (timeout: /dev/zero was
-// read forever; the limit turns a hang into a failure of this test instead of a stuck ctest).
+// A directory, an endless device and an oversized file are refused at once. A reader that reads
+// /dev/zero to its end never returns: the timeout turns such a hang into a failure of this test
+// instead of a stuck ctest.
 TEST_CASE("hostile: a scene, sweep or study path that is not a small regular file exits 2") {
   ScratchDir scratch("paths");
   const std::string big = scratch / "big.toml";

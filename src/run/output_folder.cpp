@@ -140,12 +140,14 @@ void OutputFolder::remove_run_outputs() const {
   }
 }
 
-std::string OutputFolder::run_id() const {
+std::string OutputFolder::run_id(bool* unidentified) const {
+  bool readable_without_id = false;
   const fs::path summary = fs::path(dir_) / "summary.json";
   if (fs::exists(summary)) {
     try {
       const JsonValue j = read_json_file(summary.string());
       if (const JsonValue* id = j.find("run_id"); id && id->kind == JsonValue::Kind::string) return id->text;
+      readable_without_id = true;
     } catch (const InputError&) {
       // unreadable summary: try the collection
     }
@@ -153,9 +155,11 @@ std::string OutputFolder::run_id() const {
   const std::string pvd = slurp(fs::path(dir_) / "particles.pvd");
   const std::string key = "<!-- arksph run_id=\"";
   const auto b = pvd.find(key);
-  if (b == std::string::npos) return {};
-  const auto e = pvd.find('"', b + key.size());
-  return e == std::string::npos ? std::string() : pvd.substr(b + key.size(), e - b - key.size());
+  const auto e = b == std::string::npos ? b : pvd.find('"', b + key.size());
+  if (e != std::string::npos) return pvd.substr(b + key.size(), e - b - key.size());
+  if (pvd.find("<Collection") != std::string::npos) readable_without_id = true;
+  if (unidentified) *unidentified = readable_without_id;
+  return {};
 }
 
 }  // namespace arksph

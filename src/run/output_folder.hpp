@@ -40,7 +40,9 @@ class OutputFolder {
   // wrote them for this run). OutputError if one cannot be removed.
   void remove_run_outputs() const;
   // The run id the folder's outputs carry (summary.json, else particles.pvd); "" if none is found.
-  std::string run_id() const;
+  // `unidentified` (optional) is set when "" comes from a readable summary.json or collection that
+  // carries no id (the output of a run that wrote none).
+  std::string run_id(bool* unidentified = nullptr) const;
 
  private:
   std::string dir_, source_;

@@ -125,6 +125,13 @@ TEST_CASE("output folder: a restart into the folder of another run exits 2 and l
   CHECK(o.code == 2);
   CHECK(o.err.find("another run") != std::string::npos);
   CHECK(slurp(b + "/particles.pvd") == pvd_before);
+  // A collection without a run id (written by a run that records none) is not this run's either.
+  const std::string d = scratch / "d";
+  fs::create_directories(d);
+  std::ofstream(d + "/particles.pvd") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">\n  <Collection>\n"
+                                         "    <DataSet timestep=\"0\" file=\"particles_000000.vtp\"/>\n  </Collection>\n</VTKFile>\n";
+  CHECK(run_arksph_captured("run --restart " + a + "/checkpoint.h5 --quiet --out " + d + " --set time.end=0.02",
+                            scratch.dir.string()).code == 2);
   // Its own folder, and an empty one, are fine.
   CHECK(run_arksph_captured("run --restart " + a + "/checkpoint.h5 --quiet --out " + (scratch / "c") +
                                 " --set time.end=0.02", scratch.dir.string()).code == 0);

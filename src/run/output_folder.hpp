@@ -10,7 +10,7 @@
 //   - files that are not run outputs make the folder refused (exit 2) unless --overwrite is given;
 //     they are never removed;
 //   - a run writes its run id into summary.json and particles.pvd; a restart keeps the run id of
-//     its checkpoint, and is refused (exit 2) in a folder whose outputs carry another run id.
+//     its checkpoint, and is refused (exit 2) in a folder whose outputs carry another run id or none.
 #pragma once
 #include <string>
 #include <vector>

@@ -161,7 +161,7 @@ TEST_CASE("hostile: batch --set of a varied key, or of output.directory, exits 2
                                         << "values = [0.01, 0.02]\n";
   for (const auto& [set, key] : {std::pair<std::string, std::string>{"time.end=0.5", "time.end"},
                                  {"'time={end=0.5}'", "time.end"},
-                                 {"output.directory=x", "output.directory"}}) {
+                                 {"output.directory=" + (scratch / "x"), "output.directory"}}) {
     CAPTURE(set);
     const RunOutcome o = run_arksph_captured("batch " + (scratch / "sweep.toml") + " --quiet --out " +
                                                  (scratch / "b") + " --set " + set,

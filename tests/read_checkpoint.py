@@ -81,6 +81,8 @@ def check_file(path):
                 require(h5py.check_string_dtype(dtype) is not None, f"attribute '{name}' is not a string")
             else:
                 require(dtype == kind, f"attribute '{name}' has type {dtype}, expected {kind}")
+        if "run_id" in f.attrs:  # optional
+            require(h5py.check_string_dtype(attr_type(f, "run_id")[0]) is not None, "attribute 'run_id' is not a string")
         a = f.attrs
         fmt = a["format"]
         fmt = fmt.decode() if isinstance(fmt, bytes) else fmt

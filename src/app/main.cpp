@@ -1,4 +1,4 @@
-// arksph command line: run, list, help. Exit codes: 0 ok, 2 bad input, 3 numerical failure.
+// arksph command line: run, list, help. Exit codes: README.md, "Exit codes".
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -9,6 +9,8 @@
 #include "run/omp_wait_policy.hpp"
 #include "run/interrupt.hpp"
 #include "run/simulation.hpp"
+#include "app/cli_args.hpp"
+#include "app/run_report.hpp"
 #include "app/study_commands.hpp"
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
@@ -21,10 +23,12 @@ const char* kUsage =
     "arksph - SPH for incompressible viscous flow (WCSPH and ISPH on SUNDIALS ARKODE)\n"
     "\n"
     "usage:\n"
-    "  arksph run [SCENE.toml] [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
+    "  arksph run [SCENE.toml] [--out DIR] [--set KEY=VALUE ...] [--overwrite] [--quiet]\n"
     "      Runs a scene file, or the embedded default scene (lid-driven cavity, Re = 100) without one.\n"
     "      --set overrides any scene key by its dotted path, e.g. --set time.end=2 --set method.kernel=cubic_spline\n"
-    "      --out DIR writes the output there (same as --set output.directory=DIR)\n"
+    "      --out DIR writes the output there (same as --set output.directory=DIR); --out=DIR works too\n"
+    "      --overwrite  write into a folder that also holds files other than arksph outputs\n"
+    "      A fresh run removes an earlier run's outputs from the folder (docs/user-guide.md, \"The output folder\").\n"
     "      --quiet   no progress line on stderr\n"
     "  arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...]\n"
     "      Continues the run saved in checkpoint FILE (e.g. --set time.end=10 to go further); the scene is the\n"
@@ -36,11 +40,13 @@ const char* kUsage =
     "  arksph default-scene        prints the embedded default scene (a commented template of every key)\n"
     "  arksph scene-reference      prints the reference of every scene key and registered part (Markdown)\n"
     "  arksph --help | run --help  this text\n"
+    "  arksph --version            version and git commit\n"
     "\n"
     "output (in the output directory): particles_NNNNNN.vtp + particles.pvd (ParaView), timeseries.csv,\n"
     "summary.json, checkpoint.h5 (every output.checkpoint_every and at the end).\n"
-    "Exit codes: 0 finished, 2 bad input, 3 numerical failure (output so far stays valid),\n"
-    "130/143 stopped by SIGINT/SIGTERM (checkpoint.h5 written; continue with --restart).\n";
+    "Exit codes (README.md): 0 finished, 1 internal error (a bug), 2 bad input, 3 numerical failure\n"
+    "(output so far stays valid), 4 order study flagged, 5 output could not be written, 6 out of memory,\n"
+    "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; checkpoint.h5 written, continue with --restart).\n";
 
 std::string toml_quote(const std::string& s) {
   std::string q = "\"";
@@ -63,28 +69,30 @@ int cmd_run(int argc, char** argv) {
   std::string scene_path, restart_path;
   std::vector<std::string> sets;
   arksph::RunOptions options;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
+  const std::vector<std::string> args = arksph::split_option_values(argc, argv, {"--set", "--out", "--restart"});
+  const int count = static_cast<int>(args.size());
+  for (int i = 0; i < count; ++i) {
+    const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
     } else if (a == "--set" || a == "--out") {
-      if (i + 1 >= argc) throw arksph::InputError(a + ": missing value");
-      const std::string v = argv[++i];
+      if (i + 1 >= count) throw arksph::InputError(a + ": missing value");
+      const std::string& v = args[++i];
       sets.push_back(a == "--set" ? v : "output.directory=" + toml_quote(v));
     } else if (a == "--restart") {
-      if (i + 1 >= argc) throw arksph::InputError(a + ": missing checkpoint file");
-      restart_path = argv[++i];
-    } else if (a.rfind("--set=", 0) == 0) {
-      sets.push_back(a.substr(6));
+      if (i + 1 >= count) throw arksph::InputError(a + ": missing checkpoint file");
+      restart_path = args[++i];
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
+    } else if (a == "--overwrite") {
+      options.overwrite = true;
     } else if (!a.empty() && a[0] == '-') {
-      throw arksph::InputError(a + ": unknown option (see arksph run --help)");
+      throw arksph::InputError(arksph::echo_value(a) + ": unknown option (see arksph run --help)");
     } else if (scene_path.empty()) {
       scene_path = a;
     } else {
-      throw arksph::InputError(a + ": more than one scene file given");
+      throw arksph::InputError(arksph::echo_value(a) + ": more than one scene file given");
     }
   }
   if (!restart_path.empty() && !scene_path.empty())
@@ -106,11 +114,15 @@ int cmd_run(int argc, char** argv) {
   if (r.interrupted) {
     std::fprintf(stderr, "arksph: %s; checkpoint written to %s (continue: arksph run --restart %s)\n",
                  r.message.c_str(), r.checkpoint.c_str(), r.checkpoint.c_str());
+  } else if (r.exit_code == 5) {  // what could not be written; the checkpoint if it was
+    std::fprintf(stderr, "arksph: %s (output so far kept in %s%s)\n", r.message.c_str(), scene.directory.c_str(),
+                 r.checkpoint.empty() ? "" : ("; checkpoint " + r.checkpoint + " written").c_str());
   } else if (r.exit_code != 0) {
     std::fprintf(stderr, "arksph: simulation failed: %s (output so far kept in %s)\n", r.message.c_str(),
                  scene.directory.c_str());
   } else {
     std::printf("arksph: finished, output in %s\n", scene.directory.c_str());
+    arksph::print_next_steps(scene.directory);
   }
   return r.exit_code;
 }
@@ -125,6 +137,10 @@ int main(int argc, char** argv) {
       return argc < 2 ? 2 : 0;
     }
     const std::string cmd = argv[1];
+    if (cmd == "--version" || cmd == "version") {
+      std::fputs(arksph::version_text().c_str(), stdout);
+      return 0;
+    }
     if (cmd == "run") return cmd_run(argc - 2, argv + 2);
     if (cmd == "list") return cmd_list();
     if (cmd == "batch") return arksph::cmd_batch(argc - 2, argv + 2);
@@ -137,7 +153,7 @@ int main(int argc, char** argv) {
       std::fputs(arksph::scene_reference_markdown().c_str(), stdout);
       return 0;
     }
-    std::fprintf(stderr, "arksph: %s: unknown command (try arksph --help)\n", cmd.c_str());
+    std::fprintf(stderr, "arksph: %s: unknown command (try arksph --help)\n", arksph::echo_value(cmd).c_str());
     return 2;
   } catch (const arksph::InputError& e) {
     std::fprintf(stderr, "arksph: %s\n", e.what());
@@ -145,8 +161,11 @@ int main(int argc, char** argv) {
   } catch (const arksph::NumericalFailure& e) {
     std::fprintf(stderr, "arksph: simulation failed: %s\n", e.what());
     return 3;
+  } catch (const arksph::OutputError& e) {
+    std::fprintf(stderr, "arksph: %s\n", e.what());
+    return 5;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "arksph: error: %s\n", e.what());
+    std::fprintf(stderr, "arksph: internal error (a bug, please report it): %s\n", e.what());
     return 1;
   }
 }

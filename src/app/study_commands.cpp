@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli_args.hpp"
 #include "core/errors.hpp"
 #include "study/batch.hpp"
 #include "study/order_study.hpp"
@@ -19,9 +20,9 @@ const char* kBatchUsage =
     "usage: arksph batch SWEEP.toml [--jobs N] [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
     "  Runs the Cartesian product of the sweep's [[vary]] lists over its base scene, N runs at a time, each\n"
     "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped.\n"
-    "  --set adds an override to every run (after the sweep's own set list).\n"
+    "  --set adds an override to every run (after the sweep's own set list); a varied key is refused (exit 2).\n"
     "  Results: <out>/batch.csv and <out>/batch.json. Exit 0 if every run finished ok, 3 otherwise,\n"
-    "  2 for a bad sweep file (nothing is run).\n";
+    "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n";
 
 const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
@@ -43,21 +44,23 @@ int parse_int(const std::string& opt, const std::string& v) {
 StudyArgs parse_study_args(const std::string& kind, int argc, char** argv) {
   StudyArgs args;
   const bool takes_jobs = kind == "work-precision";
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if ((a == "--set" || a == "--out" || (takes_jobs && (a == "--jobs" || a == "-j"))) && i + 1 < argc) {
-      const std::string v = argv[++i];
+  const std::vector<std::string> list = split_option_values(argc, argv, {"--set", "--out", "--jobs"});
+  const int count = static_cast<int>(list.size());
+  for (int i = 0; i < count; ++i) {
+    const std::string& a = list[i];
+    if ((a == "--set" || a == "--out" || (takes_jobs && (a == "--jobs" || a == "-j"))) && i + 1 < count) {
+      const std::string& v = list[++i];
       if (a == "--set") args.sets.push_back(v);
       else if (a == "--out") args.out = v;
       else args.jobs = parse_int(a, v);
     } else if (a == "--quiet" || a == "-q") {
       args.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
-      throw InputError(a + ": unknown option or missing value (see arksph study --help)");
+      throw InputError(echo_value(a) + ": unknown option or missing value (see arksph study --help)");
     } else if (args.path.empty()) {
       args.path = a;
     } else {
-      throw InputError(a + ": more than one study file given");
+      throw InputError(echo_value(a) + ": more than one study file given");
     }
   }
   if (args.path.empty()) throw InputError("study " + kind + ": missing the study file (see arksph study --help)");
@@ -69,31 +72,37 @@ int cmd_batch(int argc, char** argv) {
   std::string sweep_path;
   std::vector<std::string> extra_sets;
   BatchOptions opt;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
+  const std::vector<std::string> list = split_option_values(argc, argv, {"--set", "--out", "--jobs"});
+  const int count = static_cast<int>(list.size());
+  for (int i = 0; i < count; ++i) {
+    const std::string& a = list[i];
     if (a == "--help" || a == "-h") {
       std::fputs(kBatchUsage, stdout);
       return 0;
     } else if (a == "--jobs" || a == "-j" || a == "--out") {
-      if (i + 1 >= argc) throw InputError(a + ": missing value");
-      const std::string v = argv[++i];
+      if (i + 1 >= count) throw InputError(a + ": missing value");
+      const std::string& v = list[++i];
       if (a == "--out") opt.output = v;
       else opt.jobs = parse_int(a, v);
     } else if (a == "--set") {
-      if (i + 1 >= argc) throw InputError(a + ": missing value");
-      extra_sets.push_back(argv[++i]);
+      if (i + 1 >= count) throw InputError(a + ": missing value");
+      extra_sets.push_back(list[++i]);
     } else if (a == "--quiet" || a == "-q") {
       opt.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
-      throw InputError(a + ": unknown option (see arksph batch --help)");
+      throw InputError(echo_value(a) + ": unknown option (see arksph batch --help)");
     } else if (sweep_path.empty()) {
       sweep_path = a;
     } else {
-      throw InputError(a + ": more than one sweep file given");
+      throw InputError(echo_value(a) + ": more than one sweep file given");
     }
   }
   if (sweep_path.empty()) throw InputError("batch: missing the sweep file (see arksph batch --help)");
   Sweep sweep = read_sweep_file(sweep_path);
+  for (const std::string& set : extra_sets)  // an override of a varied key would silently replace it
+    if (const std::string key = varied_key_overridden(sweep, set); !key.empty())
+      throw InputError("--set " + echo_value(set) + ": " + echo_value(key) + " is varied by " + echo_value(sweep_path) +
+                       "; remove it from the sweep's [[vary]] or from --set");
   for (auto& run : sweep.runs) run.sets.insert(run.sets.end(), extra_sets.begin(), extra_sets.end());
   sweep.common_sets.insert(sweep.common_sets.end(), extra_sets.begin(), extra_sets.end());
   const BatchResult res = run_batch(sweep, opt);

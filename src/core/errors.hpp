@@ -1,4 +1,5 @@
-// Error types that map to the exit codes (2 bad input, 3 numerical failure).
+// Error types that map to the exit codes (README.md, "Exit codes"): 2 bad input, 3 numerical
+// failure, 5 output could not be written.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -14,5 +15,34 @@ struct InputError : std::runtime_error {
 struct NumericalFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// An output file could not be written (disk full, file size limit, unwritable folder): exit code 5.
+// what() is "cannot write PATH: reason".
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A value as echoed in a message: one line, at most about 200 characters. A longer text is cut
+// (never inside a UTF-8 character) and ends in "… (N characters)", so that a 1 MB value or a huge
+// expression does not flood stderr.
+inline std::string echo_value(const std::string& value, std::size_t limit = 200) {
+  std::string s = value.size() > limit ? value.substr(0, limit) : value;
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  if (value.size() > limit) {
+    // Drop a UTF-8 character cut in two: its lead byte says how many bytes it needs.
+    std::size_t i = s.size(), continuation = 0;
+    while (i > 0 && continuation < 3 && (static_cast<unsigned char>(s[i - 1]) & 0xC0) == 0x80) --i, ++continuation;
+    if (i > 0) {
+      const unsigned char lead = static_cast<unsigned char>(s[i - 1]);
+      const std::size_t need = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+      if (need != continuation + 1) s.resize(i - 1);
+    }
+    std::size_t characters = 0;  // UTF-8 characters: bytes that are not continuation bytes
+    for (char c : value) characters += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    s += "\u2026 (" + std::to_string(characters) + " characters)";
+  }
+  return s;
+}
 
 }  // namespace arksph

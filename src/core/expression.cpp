@@ -38,11 +38,11 @@ std::string describe(const std::string& text, const mu::ParserError& e,
                      const std::vector<std::string>& variables) {
   std::string reason;
   if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
-    reason = "unknown name \"" + e.GetToken() + "\" (variables: " + list_names(variables) +
+    reason = "unknown name \"" + echo_value(e.GetToken(), 60) + "\" (variables: " + list_names(variables) +
              "; constant: pi)";
   else
-    reason = e.GetMsg();
-  return one_line("expression \"" + text + "\": " + reason);
+    reason = echo_value(e.GetMsg());
+  return one_line("expression \"" + echo_value(text) + "\": " + reason);
 }
 
 }  // namespace
@@ -60,7 +60,7 @@ std::unique_ptr<Expression::State> Expression::compile(const std::string& text,
     s->parser.SetExpr(text);
     s->parser.Eval();  // parse now, so that errors surface when the scene is read
     if (s->parser.GetNumResults() != 1)
-      throw InputError(one_line("expression \"" + text + "\": a single value is expected, not a "
+      throw InputError(one_line("expression \"" + echo_value(text) + "\": a single value is expected, not a "
                                 "comma-separated list"));
     for (const auto& [name, ptr] : s->parser.GetUsedVar()) s->used.push_back(name);
     s->parser.Eval();  // GetUsedVar() resets the bytecode: rebuild it once here, not in eval()

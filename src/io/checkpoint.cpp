@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "io/csv_writer.hpp"  // temporary_path
 
 namespace arksph {
 
@@ -143,12 +144,18 @@ std::vector<std::pair<const char*, std::size_t>> state_blocks(const StateLayout&
   return b;
 }
 
-void write_file(const std::string& path, const Checkpoint& c) {
+// The checkpoint as the bytes of an HDF5 file, built in memory (core driver, no backing store).
+// HDF5 never touches the disk: a full disk or a file size limit shows up in write_image below,
+// with HDF5's file already closed cleanly (a failed H5Fflush/H5Fclose on a real file leaves the
+// library with a half-closed file that it tries to close again at exit).
+std::vector<unsigned char> file_image(const Checkpoint& c) {
   const StateLayout L = c.layout();
   if (c.state.size() != L.size() || c.mass.size() != c.n || c.rho0.size() != c.n || c.id.size() != c.n ||
       c.phase.size() != c.n)
     throw std::logic_error("write_checkpoint: array sizes do not match n = " + std::to_string(c.n));
-  Hid file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "H5Fcreate");
+  Hid fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "H5Pcreate");
+  check(H5Pset_fapl_core(fapl, 1 << 20, 0), "H5Pset_fapl_core");
+  Hid file(H5Fcreate("arksph-checkpoint-image", H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, "H5Fcreate");
   write_string(file, "format", kFormatName);
   write_int32(file, "format_version", c.format_version);
   write_int32(file, "dimension", c.dimension);
@@ -166,6 +173,7 @@ void write_file(const std::string& path, const Checkpoint& c) {
   write_int64(file, "checkpoint_index", c.checkpoint_index);
   write_int64(file, "wall_reflections", c.wall_reflections);
   write_string(file, "scene_toml", c.scene_toml);
+  if (!c.run_id.empty()) write_string(file, "run_id", c.run_id);
   {
     Hid state(H5Gcreate2(file, "state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group state");
     for (const auto& [name, offset] : state_blocks(L)) write_doubles(state, name, c.state.data() + offset, c.n);
@@ -179,21 +187,43 @@ void write_file(const std::string& path, const Checkpoint& c) {
     write_array(particles, "phase", H5T_STD_I32LE, H5T_NATIVE_INT32, c.phase.data(), c.n);
   }
   check(H5Fflush(file, H5F_SCOPE_GLOBAL), "H5Fflush");
+  const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+  if (size <= 0) throw std::runtime_error("H5Fget_file_image: " + hdf5_reason());
+  std::vector<unsigned char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(file, image.data(), image.size()) != size)
+    throw std::runtime_error("H5Fget_file_image: " + hdf5_reason());
   file.close("H5Fclose");
+  return image;
 }
 
-// Pushes a file's (or directory's) data to the disk, so that the rename below is never seen
-// pointing at data that a power loss would lose.
-void sync_path(const std::string& path, bool directory) {
-  const int fd = ::open(path.c_str(), directory ? O_RDONLY | O_DIRECTORY : O_RDONLY);
-  if (fd < 0) {
-    if (directory) return;  // best effort for the directory entry
-    throw std::runtime_error(std::string("open for fsync: ") + std::strerror(errno));
+// Writes the bytes to `path` and syncs them; throws OutputError("cannot write TARGET: reason").
+void write_image(const std::string& path, const std::string& target, const std::vector<unsigned char>& image) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw OutputError("cannot write " + target + ": " + std::strerror(errno));
+  int err = 0;
+  for (std::size_t done = 0; done < image.size() && !err;) {
+    const ssize_t w = ::write(fd, image.data() + done, image.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) err = w < 0 ? errno : EIO;
+    else done += static_cast<std::size_t>(w);
   }
-  const int rc = ::fsync(fd);
-  const int err = errno;
+  if (!err && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && !err) err = errno;
+  if (err) {
+    std::remove(path.c_str());
+    throw OutputError("cannot write " + target + ": " + std::strerror(err));
+  }
+}
+
+
+
+// Pushes the directory entry of the renamed file to the disk (best effort), so that the rename is
+// never seen pointing at data that a power loss would lose.
+void sync_directory(const std::string& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
   ::close(fd);
-  if (rc != 0 && !directory) throw std::runtime_error(std::string("fsync: ") + std::strerror(err));
 }
 
 // ---- reading ----
@@ -257,6 +287,7 @@ void read_array(hid_t group, const std::string& where, const char* name, hid_t m
 
 Checkpoint read_file(const std::string& path) {
   if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("not a regular file");
   if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error("not an HDF5 file (or truncated)");
   Hid file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "H5Fopen");
   if (!has_attr(file, "format") || read_string(file, "format") != kFormatName)
@@ -285,6 +316,7 @@ Checkpoint read_file(const std::string& path) {
   c.checkpoint_index = read_int64(file, "checkpoint_index");
   c.wall_reflections = read_int64(file, "wall_reflections");
   c.scene_toml = read_string(file, "scene_toml");
+  if (has_attr(file, "run_id")) c.run_id = read_string(file, "run_id");
 
   const StateLayout L = c.layout();
   c.state.assign(L.size(), 0.0);
@@ -313,22 +345,24 @@ Checkpoint read_file(const std::string& path) {
 }  // namespace
 
 void write_checkpoint(const std::string& path, const Checkpoint& c) {
-  const std::string tmp = path + ".tmp";
+  std::vector<unsigned char> image;
   try {
     QuietHdf5 quiet;
-    write_file(tmp, c);
-    sync_path(tmp, false);
-  } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + e.what());
+    image = file_image(c);
+  } catch (const std::logic_error&) {
+    throw;
+  } catch (const std::exception& e) {  // HDF5 failed in memory: not a disk problem
+    throw std::runtime_error("cannot write " + path + ": " + echo_value(e.what()));
   }
+  const std::string tmp = temporary_path(path);
+  write_image(tmp, path, image);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": rename: " + std::strerror(err));
+    throw OutputError("cannot write " + path + ": rename: " + std::strerror(err));
   }
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  sync_path(dir.empty() ? "." : dir, true);
+  sync_directory(dir.empty() ? "." : dir);
 }
 
 Checkpoint read_checkpoint(const std::string& path) {

@@ -2,8 +2,9 @@
 //   - the ODE state vector y, block by block as StateLayout lays it out (x, y, u, v, rho);
 //   - the constant per-particle data (mass, rho0, id, phase);
 //   - the resolved scene as TOML text, the time, the integrator counters and the output counters.
-// The file is written to `path.tmp`, flushed, closed, synced and renamed onto `path`, so a reader
-// sees either the previous checkpoint or the new one, never a partial file.
+// The file is built in memory, written to a temporary beside `path` (temporary_path), synced and
+// renamed onto `path`, so a reader sees either the previous checkpoint or the new one, never a
+// partial file.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -32,6 +33,7 @@ struct Checkpoint {
   long checkpoint_index = 0;    // scheduled checkpoints written so far (output.checkpoint_every)
   long wall_reflections = 0;
   std::string scene_toml;       // Scene::resolved_toml of the run that wrote it
+  std::string run_id;           // the run's id (run/output_folder.hpp); "" in files that lack it
   std::vector<double> state;    // y in StateLayout order, size layout().size()
   std::vector<double> mass, rho0;
   std::vector<std::int64_t> id;
@@ -47,7 +49,8 @@ struct Checkpoint {
   }
 };
 
-// Writes atomically (path.tmp, then rename). Throws std::runtime_error("cannot write <path>: ...").
+// Writes atomically (a temporary, then rename). Throws OutputError("cannot write <path>: reason")
+// when the file cannot be written (disk full, size limit, unwritable folder).
 void write_checkpoint(const std::string& path, const Checkpoint& c);
 
 // Reads a checkpoint; ignores any `path.tmp` beside it. Throws InputError("<path>: ...") if the file

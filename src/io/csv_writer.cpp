@@ -1,16 +1,20 @@
 // CSV time series and tables; atomic text writes.
 #include "io/csv_writer.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 #include <utility>
 
+#include "core/errors.hpp"
+
 namespace arksph {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, int err) {
-  throw std::runtime_error("cannot write " + path + ": " + std::strerror(err));
+  throw OutputError("cannot write " + path + ": " + std::strerror(err));
 }
 
 // A header cell, quoted per RFC 4180 if it holds a comma, quote or line break.
@@ -46,8 +50,10 @@ std::string values_line(const std::vector<double>& values, std::size_t ncols, co
 
 }  // namespace
 
+std::string temporary_path(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
+
 void write_text_atomic(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = temporary_path(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) fail(path, errno);
   errno = 0;

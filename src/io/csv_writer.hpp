@@ -7,8 +7,12 @@
 
 namespace arksph {
 
-// Writes `text` to `path + ".tmp"` and renames it onto `path`, so readers never see a partial file.
-// Throws std::runtime_error("cannot write <path>: <reason>") and removes the temporary on failure.
+// The temporary a file is written to before it is renamed onto `path`: `path.tmp.PID`, unique per
+// process, so that two processes writing the same file never share a temporary.
+std::string temporary_path(const std::string& path);
+
+// Writes `text` to temporary_path(path) and renames it onto `path`, so readers never see a partial
+// file. Throws OutputError("cannot write <path>: <reason>") and removes the temporary on failure.
 void write_text_atomic(const std::string& path, const std::string& text);
 
 // A CSV file that grows by one row per call; each row is flushed, so a killed run keeps its rows.
@@ -22,10 +26,10 @@ class TimeseriesCsv {
   TimeseriesCsv(TimeseriesCsv&& o) noexcept;
   TimeseriesCsv& operator=(TimeseriesCsv&& o) noexcept;
 
-  // Creates (truncates) the file and writes the header line. Throws std::runtime_error.
+  // Creates (truncates) the file and writes the header line. Throws OutputError.
   void open(const std::string& path, std::vector<std::string> columns);
   // Appends one row, values with %.10g; values.size() must equal the number of columns
-  // (std::invalid_argument otherwise). Throws std::runtime_error on a write error.
+  // (std::invalid_argument otherwise). Throws OutputError on a write error.
   void row(const std::vector<double>& values);
   void close();
 

@@ -35,8 +35,9 @@ void PvdCollection::add(double time, const std::string& vtp_filename) {
 }
 
 void PvdCollection::write() const {
-  std::string xml =
-      "<?xml version=\"1.0\"?>\n"
+  std::string xml = "<?xml version=\"1.0\"?>\n";
+  if (!run_id_.empty()) xml += "<!-- arksph run_id=\"" + xml_attr(run_id_) + "\" -->\n";
+  xml +=
       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       "  <Collection>\n";
   char t[32];

@@ -3,6 +3,7 @@
 // is valid (and lists every frame written so far) even if the run dies.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace arksph {
@@ -13,7 +14,10 @@ class PvdCollection {
   // until the first add().
   explicit PvdCollection(std::string dir, std::string name = "particles.pvd");
 
-  // Appends a frame and rewrites the collection. Throws std::runtime_error("cannot write ...").
+  // An id written as the comment <!-- arksph run_id="ID" --> after the XML declaration ("" : none).
+  void set_run_id(std::string id) { run_id_ = std::move(id); }
+
+  // Appends a frame and rewrites the collection. Throws OutputError("cannot write ...").
   void add(double time, const std::string& vtp_filename);
 
   // Rewrites the collection as it stands (also valid with no frame).
@@ -28,6 +32,7 @@ class PvdCollection {
     std::string file;
   };
   std::string path_;
+  std::string run_id_;
   std::vector<Entry> frames_;
 };
 

@@ -17,6 +17,7 @@
 #include "core/errors.hpp"
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
+#include "io/input_file.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_schema.hpp"
 
@@ -56,7 +57,7 @@ toml::table parse_document(const std::string& text, const std::string& source) {
 
 // Applies "KEY=VALUE" to the tree; returns (KEY, "--set KEY=VALUE") for the error messages.
 std::pair<std::string, std::string> apply_override(toml::table& root, const std::string& set) {
-  const std::string option = "--set " + set;
+  const std::string option = "--set " + echo_value(set);
   auto eq = set.find('=');
   if (eq == std::string::npos)
     throw InputError(one_line(option + ": expected KEY=VALUE, e.g. --set time.end=2"));
@@ -72,7 +73,7 @@ std::pair<std::string, std::string> apply_override(toml::table& root, const std:
   for (const auto& p : parts)
     if (p.empty())
       throw InputError(one_line(option + ": expected KEY=VALUE with KEY a dotted path such as "
-                                         "time.end, got \"" + key + "\""));
+                                         "time.end, got \"" + echo_value(key) + "\""));
 
   // VALUE as a TOML value (number, boolean, string, array, inline table), else a bare string.
   toml::table holder;
@@ -92,7 +93,7 @@ std::pair<std::string, std::string> apply_override(toml::table& root, const std:
     walked += (walked.empty() ? "" : ".") + parts[i];
     if (!t->get(parts[i])) t->insert(parts[i], toml::table{});
     t = t->get(parts[i])->as_table();
-    if (!t) throw InputError(one_line(option + ": " + walked + ": is not a table, cannot set " + key));
+    if (!t) throw InputError(one_line(option + ": " + echo_value(walked) + ": is not a table, cannot set " + echo_value(key)));
   }
   holder.get("v")->visit([&](auto&& value) { t->insert_or_assign(parts.back(), std::move(value)); });
   return {key, option};
@@ -332,11 +333,7 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
 }
 
 Scene read_scene_file(const std::string& path, const std::vector<std::string>& sets) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(one_line(path + ": cannot open scene file: " + std::strerror(errno)));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return read_scene_text(text.str(), path, sets);
+  return read_scene_text(read_input_file(path, "scene"), path, sets);
 }
 
 }  // namespace arksph

@@ -31,7 +31,7 @@ std::string type_name(const toml::node& n) {
 // "got string \"abc\"", "got array": the type, and the value when it is short and scalar.
 std::string got(const toml::node& n) {
   std::string value;
-  if (auto s = n.value_exact<std::string>()) value = '"' + *s + '"';
+  if (auto s = n.value_exact<std::string>()) value = '"' + echo_value(*s) + '"';
   else if (auto i = n.value_exact<int64_t>()) value = std::to_string(*i);
   else if (auto d = n.value_exact<double>()) value = format_number(*d);
   else if (auto b = n.value_exact<bool>()) value = *b ? "true" : "false";
@@ -94,11 +94,11 @@ std::string Reporter::origin(const std::string& key) const {
 
 void Reporter::fail(const std::string& key, const std::string& reason) const {
   std::string where = origin(key);
-  throw InputError(one_line(key.empty() ? where + ": " + reason : where + ": " + key + ": " + reason));
+  throw InputError(one_line(key.empty() ? where + ": " + reason : where + ": " + echo_value(key) + ": " + reason));
 }
 
 void Reporter::warn(const std::string& key, const std::string& reason) const {
-  if (warnings_) *warnings_ << one_line(origin(key) + ": " + key + ": " + reason) << '\n';
+  if (warnings_) *warnings_ << one_line(origin(key) + ": " + echo_value(key) + ": " + reason) << '\n';
 }
 
 // ---- Section ----
@@ -174,7 +174,7 @@ std::string Section::one_of(std::string_view name, const std::vector<std::string
                             const std::string& fallback) const {
   std::string v = string(name, fallback);
   if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-    fail(name, "\"" + v + "\" is not one of: " + join(allowed));
+    fail(name, "\"" + echo_value(v) + "\" is not one of: " + join(allowed));
   return v;
 }
 
@@ -182,7 +182,7 @@ std::string Section::registered(std::string_view name, const std::string& family
                                 const std::string& fallback) const {
   std::string v = string(name, fallback);
   if (!is_registered(family, v))
-    fail(name, "unknown " + family + " \"" + v + "\" (valid: " + join(registered_names(family)) + ")");
+    fail(name, "unknown " + family + " \"" + echo_value(v) + "\" (valid: " + join(registered_names(family)) + ")");
   return v;
 }
 

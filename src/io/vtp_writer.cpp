@@ -22,13 +22,15 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/errors.hpp"
+#include "io/csv_writer.hpp"  // temporary_path
 #include "io/output_fields.hpp"
 
 namespace arksph {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& reason) {
-  throw std::runtime_error("cannot write " + path + ": " + reason);
+  throw OutputError("cannot write " + path + ": " + reason);
 }
 
 // A field pointer the frame must provide (only when there are particles to read).
@@ -142,7 +144,7 @@ std::string failure_reason(unsigned long code, const std::string& vtk_error) {
 
 void write_vtp(const std::string& path, const Frame& f) {
   vtkSmartPointer<vtkPolyData> pd = make_polydata(f);
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = temporary_path(path);
 
   // Open the temporary once ourselves: a missing or read-only directory gives a clear errno reason.
   if (std::FILE* probe = std::fopen(tmp.c_str(), "wb")) {

@@ -5,9 +5,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
 
 #include "core/errors.hpp"
+#include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
+#include "run/restart_keys.hpp"
 
 namespace arksph {
 
@@ -48,6 +51,10 @@ Checkpointer::Checkpointer(const Scene& scene, const Model& model, const Checkpo
       every_(scene.checkpoint_every) {
   if (!restart_) return;
   const std::string& src = restart_path;
+  {
+    std::ostringstream ignored;  // warnings were given when the checkpointed run started
+    check_restart_keys(read_scene_text(restart_->scene_toml, src + " [scene_toml]", {}, ignored), scene, src);
+  }
   const StateLayout& L = model.rhs->layout();
   const auto describe = [](std::size_t n, int dim, bool rho) {
     return std::to_string(n) + " particles in " + std::to_string(dim) + "D " + (rho ? "with" : "without") +
@@ -137,6 +144,7 @@ std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frame
   c.checkpoint_index = next_;
   c.wall_reflections = reflections;
   c.scene_toml = scene_.resolved_toml;
+  c.run_id = run_id_;
   c.state.assign(integrator.state(), integrator.state() + L.size());
   const ParticleSet& p = model_.particles;
   c.mass = p.mass;

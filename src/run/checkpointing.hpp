@@ -16,6 +16,7 @@
 // continuation but not bit-identical to the uninterrupted run.
 #pragma once
 #include <string>
+#include <utility>
 
 #include "run/setup.hpp"
 #include "io/checkpoint.hpp"
@@ -35,10 +36,13 @@ struct Interrupted {
 class Checkpointer {
  public:
   // `restart` (may be null) is the checkpoint this run starts from, read from `restart_path`;
-  // throws InputError if it does not fit the scene's particle set or time.end.
+  // throws InputError if it does not fit the scene's particle set, the keys that shape the lattice
+  // and the walls (run/restart_keys.hpp) or time.end.
   Checkpointer(const Scene& scene, const Model& model, const Checkpoint* restart, std::string restart_path);
 
   bool restarting() const { return restart_ != nullptr; }
+  // The run id stored in the checkpoints this run writes (run/output_folder.hpp).
+  void set_run_id(std::string id) { run_id_ = std::move(id); }
   const Checkpoint& restart() const { return *restart_; }
   double start_time() const { return restart_ ? restart_->time : 0.0; }
   // Index of the next output frame (frame * output.every) at the start of the run.
@@ -64,6 +68,7 @@ class Checkpointer {
   const Model& model_;
   const Checkpoint* restart_;
   std::string path_;
+  std::string run_id_;
   double every_ = 0;
   long next_ = 1;              // index k of the next scheduled checkpoint time k * every
   double last_written_ = -1;   // time of the last checkpoint written by this run

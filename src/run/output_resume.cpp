@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "run/checkpointing.hpp"  // scheduled_time
 #include "run/run_output.hpp"
 #include "io/csv_writer.hpp"
 
@@ -64,13 +66,37 @@ std::vector<std::string> split_commas(const std::string& line) {
 // Row times are printed with 10 significant digits: allow for that rounding.
 bool at_or_before(double t, double time) { return t <= time + 1e-9 * std::max(1.0, std::abs(time)); }
 
+// particles.pvd missing or unreadable: the entries of the particles_NNNNNN.vtp files found before the
+// checkpoint's frame, at the time of the timeseries.csv row of the same index (one row per frame),
+// or at frame * output.every without that row. Warns on stderr, except for a new folder (no
+// collection, no frame).
+void rebuild_collection(OutputHistory& h, const std::string& dir, double every, const char* state) {
+  long found = 0;
+  for (long k = 0; k < h.frames; ++k) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%06ld.vtp", k);
+    if (!std::filesystem::is_regular_file(std::filesystem::path(dir) / name)) continue;
+    const double t = k < static_cast<long>(h.csv_rows.size()) ? h.csv_rows[k][0] : scheduled_time(k, every);
+    h.pvd.emplace_back(t, name);
+    ++found;
+  }
+  if (found == 0 && std::string(state) == "missing") return;  // a new folder (--out): nothing was lost
+  std::fprintf(stderr,
+               "arksph: warning: particles.pvd of the earlier run is %s; rebuilt from the %ld particles_*.vtp "
+               "frame(s) found before frame %ld\n",
+               state, found, h.frames);
+}
+
 }  // namespace
 
-OutputHistory read_output_history(const std::string& dir, double time, long frames) {
+OutputHistory read_output_history(const std::string& dir, double time, long frames, double every) {
   OutputHistory h;
   h.frames = frames;
   h.time = time;
-  std::istringstream pvd(slurp(dir + "/particles.pvd"));
+  const std::string pvd_text = slurp(dir + "/particles.pvd");
+  const bool pvd_ok = pvd_text.find("<VTKFile") != std::string::npos && pvd_text.find("<Collection") != std::string::npos &&
+                      pvd_text.find("</VTKFile>") != std::string::npos;
+  std::istringstream pvd(pvd_ok ? pvd_text : std::string());
   for (std::string line; std::getline(pvd, line);) {
     if (line.find("<DataSet") == std::string::npos) continue;
     const std::string t = xml_attribute(line, "timestep"), file = xml_attribute(line, "file");
@@ -90,6 +116,7 @@ OutputHistory read_output_history(const std::string& dir, double time, long fram
     if (!at_or_before(row[0], time)) break;          // rows are in time order
     h.csv_rows.push_back(std::move(row));
   }
+  if (!pvd_ok && frames > 0) rebuild_collection(h, dir, every, pvd_text.empty() ? "missing" : "unreadable");
   return h;
 }
 

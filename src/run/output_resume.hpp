@@ -18,7 +18,9 @@ struct OutputHistory {
 };
 
 // Reads what an earlier run left in `dir`. Must be called before RunOutput (which truncates the
-// CSV) is constructed; RunOutput::resume then carries it over. Missing files give empty lists.
-OutputHistory read_output_history(const std::string& dir, double time, long frames);
+// CSV) is constructed; RunOutput::resume then carries it over. A missing timeseries.csv gives no
+// rows. A missing or unreadable particles.pvd is rebuilt from the particles_NNNNNN.vtp files found
+// before frame `frames` (times from timeseries.csv, else frame * `every`), with a warning on stderr.
+OutputHistory read_output_history(const std::string& dir, double time, long frames, double every);
 
 }  // namespace arksph

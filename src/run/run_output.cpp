@@ -3,8 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <system_error>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "diagnostics/ghia.hpp"
@@ -12,6 +11,7 @@
 #include "diagnostics/phase_interface.hpp"
 #include "diagnostics/poiseuille.hpp"
 #include "core/expression.hpp"
+#include "io/frame_order.hpp"
 #include "io/vtp_writer.hpp"
 
 namespace arksph {
@@ -25,19 +25,13 @@ double lid_speed(const Scene& s) { return std::hypot(s.sides[3].velocity[0], s.s
 double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 }  // namespace
 
-RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options)
-    : scene_(scene), model_(model), options_(options) {
-  std::error_code ec;
-  std::filesystem::create_directories(scene.directory, ec);
-  if (ec || !std::filesystem::is_directory(scene.directory))
-    throw InputError(scene.source + ": output.directory: cannot create '" + scene.directory + "': " +
-                     (ec ? ec.message() : "not a directory"));
-  if (options.write_frames) pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
-  try {
-    csv_.open(scene.directory + "/timeseries.csv", csv_columns());
-  } catch (const std::exception& e) {
-    throw InputError(scene.source + ": output.directory: " + e.what());
+RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id)
+    : scene_(scene), model_(model), options_(options), run_id_(std::move(run_id)) {
+  if (options.write_frames) {
+    pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
+    pvd_->set_run_id(run_id_);
   }
+  csv_.open(scene.directory + "/timeseries.csv", csv_columns());  // the folder exists (OutputFolder)
 }
 
 std::vector<std::string> RunOutput::csv_columns() const {
@@ -139,7 +133,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     fr.mass = f.m.data();
     fr.id = model_.particles.id.data();
     fr.phase = model_.particles.phase.data();
-    write_vtp(scene_.directory + "/" + name, fr);
+    write_vtp(scene_.directory + "/" + name, FrameInIdOrder(fr).frame());  // rows by id (io/frame_order.hpp)
     pvd_->add(t, name);
   }
   ++frames_;
@@ -150,7 +144,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
                        long wall_reflections, long neighbor_rebuilds) {
   const RhsTiming& rt = model_.rhs->timing();
   Json j = Json::object();
-  j.set("scene", scene_.name).set("scheme", scene_.scheme);
+  j.set("scene", scene_.name).set("scheme", scene_.scheme).set("run_id", run_id_);
   j.set("particles", model_.particles.n).set("dimension", scene_.dimension);
   j.set("final_time", last_t_).set("steps", stats.steps).set("rhs_evals", stats.rhs_evals);
   j.set("diagnostic_evals", diag_evals).set("step_attempts", stats.attempts);

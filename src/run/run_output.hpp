@@ -17,11 +17,14 @@ struct OutputHistory;  // checkpoint restart (app/output_resume.hpp)
 
 class RunOutput {
  public:
-  RunOutput(const Scene& scene, Model& model, const RunOptions& options);
+  // Opens timeseries.csv in the existing output folder (OutputError if it cannot). `run_id` goes
+  // into particles.pvd and summary.json (run/output_folder.hpp).
+  RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id);
   void add_term(const std::string& t) { model_.terms.push_back(t); }
-  // Refreshes the fields at (t, y), computes the metrics, writes a frame and a CSV row.
+  // Refreshes the fields at (t, y), computes the metrics, writes a frame (rows in id order) and a
+  // CSV row. Throws OutputError when a file cannot be written.
   void write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats);
-  // Writes summary.json (also after a failure: status "failed" with the diagnosis).
+  // Writes summary.json (also after a failure: status "failed" with the diagnosis). Throws OutputError.
   void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
               long wall_reflections, long neighbor_rebuilds);
   // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
@@ -37,6 +40,7 @@ class RunOutput {
   const Scene& scene_;
   Model& model_;
   RunOptions options_;
+  std::string run_id_;
   std::unique_ptr<PvdCollection> pvd_;
   TimeseriesCsv csv_;
   int frames_ = 0;

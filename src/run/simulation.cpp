@@ -12,6 +12,7 @@
 
 #include "run/checkpointing.hpp"  // checkpoints and restart
 #include "run/interrupt.hpp"
+#include "run/output_folder.hpp"
 #include "run/output_resume.hpp"
 #include "run/particle_reorder.hpp"
 #include "run/progress.hpp"
@@ -50,12 +51,35 @@ void print_run_header(const Scene& scene, const Model& model) {
   std::printf("\n  output: %s\n", scene.directory.c_str());
   std::fflush(stdout);
 }
+
+// Clears an earlier run's outputs (fresh run) or checks that the folder holds this run's (restart);
+// returns the run id.
+std::string start_output_folder(const OutputFolder& folder, const Scene& scene, const RunOptions& options) {
+  if (!options.restart) {
+    folder.remove_run_outputs();
+    return new_run_id();
+  }
+  const std::string& mine = options.restart->run_id;
+  bool unidentified = false;  // output without a run id cannot be this run's: it writes its id
+  const std::string found = folder.run_id(&unidentified);
+  if (!mine.empty() && ((!found.empty() && found != mine) || unidentified))
+    throw InputError(options.restart_path + ": output.directory: " + scene.directory +
+                     " holds the output of another run (run id " + (found.empty() ? "none" : echo_value(found, 40)) +
+                     ", the checkpoint's is " + mine + "); continue in the run's own folder or give an empty --out");
+  return mine.empty() ? new_run_id() : mine;
+}
+
 }  // namespace
 
 RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   using clock = std::chrono::steady_clock;
   const auto wall_start = clock::now();
   Model model = build_model(scene);
+  // The output folder: locked for this run; a fresh run clears an earlier run's outputs, a restart
+  // continues only its own run's (run/output_folder.hpp).
+  OutputFolder folder(scene.directory, scene.source);
+  if (!options.overwrite) folder.refuse_foreign_files();
+  const std::string run_id = start_output_folder(folder, scene, options);
   RhsEvaluator& rhs = *model.rhs;
   const StateLayout& layout = rhs.layout();
   print_run_header(scene, model);
@@ -71,10 +95,11 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   // checkpoint against the scene, and read the earlier output before RunOutput truncates it.
   if (options.restart) permute(d0, adopt_particle_order(model, options.restart->id));
   Checkpointer checkpoints(scene, model, options.restart, options.restart_path);
+  checkpoints.set_run_id(run_id);
   const OutputHistory earlier = checkpoints.restarting() ? read_output_history(scene.directory, checkpoints.start_time(),
-                                                                               checkpoints.restart().output_frame)
+                                                                               checkpoints.restart().output_frame, scene.every)
                                                          : OutputHistory{};
-  RunOutput out(scene, model, options);  // creates the directory, CSV; throws InputError if unwritable
+  RunOutput out(scene, model, options, run_id);  // truncates timeseries.csv
   if (checkpoints.restarting()) out.resume(earlier);
 
   ErkOptions eo = integrator_options(scene);
@@ -106,13 +131,13 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   Progress progress(scene.end, options.quiet);
   long diag_evals = rhs.evaluations() - diag_evals_before + 1;
 
-  // Output at t = 0, every `every`, and the end time exactly.
-  if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
-  std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
   double t = checkpoints.start_time();
   int frame = checkpoints.first_frame();
   RunResult result;
   try {
+    // Output at t = 0, every `every`, and the end time exactly.
+    if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
+    std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
     while (t < scene.end) {
       double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;  // 3 * 0.1 -> 0.3
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
@@ -149,6 +174,16 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   } catch (const NumericalFailure& e) {
     result.exit_code = 3;
     result.message = e.what();
+  } catch (const OutputError& e) {  // disk full, size limit: keep what still fits, exit 5
+    result.exit_code = 5;
+    result.message = e.what();
+    if (result.message.rfind("cannot write " + checkpoints.path() + ":", 0) != 0) {
+      try {
+        result.checkpoint = checkpoints.write(t, integrator, frame, reflections);
+      } catch (const OutputError& again) {
+        result.message += std::string("; ") + again.what();
+      }
+    }
   } catch (const Interrupted& i) {  // checkpoint at the last completed step, then exit 128 + signal
     result.exit_code = 128 + i.signal;
     result.interrupted = true;
@@ -159,7 +194,17 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const ErkStats st = integrator.stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   if (scene.reorder_every > 0) out.set_reorders(reorder.count(), reorder.seconds());
-  out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
+  try {
+    out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
+  } catch (const OutputError& e) {
+    if (result.exit_code == 0 || result.exit_code == 5) {
+      result.message = result.exit_code == 0 ? e.what() : result.message + "; " + e.what();
+      result.exit_code = 5;
+      result.checkpoint.clear();
+    } else {
+      result.message += std::string("; ") + e.what();
+    }
+  }
   return result;
 }
 

@@ -13,16 +13,20 @@ struct RunOptions {
   bool write_frames = true;  // VTP frames and PVD
   const Checkpoint* restart = nullptr;  // arksph run --restart: continue from this checkpoint
   std::string restart_path;             // its file (for messages)
+  bool overwrite = false;  // --overwrite: write into a folder that holds files other than run outputs
 };
 
 struct RunResult {
-  int exit_code = 0;  // 0 ok, 3 numerical failure
+  int exit_code = 0;  // 0 ok, 3 numerical failure, 5 output could not be written
   std::string message;
   bool interrupted = false;  // SIGINT/SIGTERM: exit code 128 + signal, checkpoint written
   std::string checkpoint;    // the last checkpoint written ("" if none)
 };
 
-// Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up.
+// Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up (also:
+// the folder is locked by another run, holds foreign files, or another run's output on restart),
+// OutputError if the folder cannot be created. A write failure during the run gives exit code 5
+// with the checkpoint and summary.json written where space allows.
 RunResult run_simulation(const Scene& scene, const RunOptions& options);
 
 }  // namespace arksph

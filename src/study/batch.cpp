@@ -17,7 +17,9 @@
 #include <thread>
 
 #include "run/interrupt.hpp"
+#include "run/output_folder.hpp"
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_reader.hpp"
 
@@ -116,14 +118,13 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
   for (const auto& run : sw.runs) {
     std::ostringstream warnings;
     try {
-      read_scene_text(slurp(sw.scene), sw.scene, run.sets, warnings);
+      read_scene_text(read_input_file(sw.scene, "scene"), sw.scene, run.sets, warnings);
     } catch (const InputError& e) {
       throw InputError(sw.source + ": run " + run.name + ": " + e.what());
     }
   }
   std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw InputError(sw.source + ": sweep.output: cannot create " + out + ": " + ec.message());
+  const OutputFolder folder(out, sw.source);  // one batch per folder at a time (exit 2 naming the pid)
 
   BatchResult res;
   res.runs.resize(sw.runs.size());

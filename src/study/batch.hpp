@@ -5,7 +5,8 @@
 // with its command line). Runs whose folder already holds a summary.json with status "ok" for the
 // same command line are skipped (resume). The results are combined into <output>/batch.csv and
 // <output>/batch.json: each run's --set values, status, exit code, wall time, steps and its
-// summary.json metrics. One progress line per finished run on stderr.
+// summary.json metrics. One progress line per finished run on stderr. The batch locks its folder
+// like a run does (run/output_folder.hpp): a second batch into the same folder exits 2.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,8 +1,10 @@
 // batch.csv and batch.json of `arksph batch` (see batch.hpp).
 #include <fstream>
+#include <sstream>
 #include <set>
 
 #include "core/errors.hpp"
+#include "io/csv_writer.hpp"  // write_text_atomic
 #include "io/summary_json.hpp"
 #include "study/batch.hpp"
 
@@ -28,8 +30,7 @@ std::vector<std::string> metric_names(const BatchResult& res) {
 }  // namespace
 
 void write_batch_csv(const Sweep& sw, const BatchResult& res, const std::string& path) {
-  std::ofstream f(path);
-  if (!f) throw InputError(path + ": cannot be written");
+  std::ostringstream f;
   const auto names = metric_names(res);
   f << "run";
   for (const auto& key : sw.columns) f << "," << csv_field(key);
@@ -49,6 +50,7 @@ void write_batch_csv(const Sweep& sw, const BatchResult& res, const std::string&
     }
     f << "\n";
   }
+  write_text_atomic(path, f.str());  // OutputError (exit 5) if it cannot be written
 }
 
 void write_batch_json(const Sweep& sw, const BatchResult& res, const std::string& path) {
@@ -75,9 +77,9 @@ void write_batch_json(const Sweep& sw, const BatchResult& res, const std::string
     runs.push(o);
   }
   j.set("runs", runs);
-  std::ofstream f(path);
-  if (!f) throw InputError(path + ": cannot be written");
+  std::ostringstream f;
   f << j.dump(2) << "\n";
+  write_text_atomic(path, f.str());
 }
 
 }  // namespace arksph

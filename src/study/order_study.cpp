@@ -134,7 +134,7 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) 
 
 OrderStudy read_order_study(const std::string& path, const std::vector<std::string>& extra_sets) {
   const toml::table root = read_study_toml(path);
-  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + key + ": " + why); };
+  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + echo_value(key) + ": " + why); };
   for (const auto& [k, v] : root)
     if (k.str() != "study" && k.str() != "dt_for") throw bad(std::string(k.str()), "unknown key (expected [study], [dt_for])");
   const toml::table* st = root["study"].as_table();

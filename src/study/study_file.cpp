@@ -6,20 +6,15 @@
 #include <string_view>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "study/reference_error.hpp"
 
 namespace arksph {
 
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_text_file(const std::string& path) { return read_input_file(path, "scene"); }
 
 toml::table read_study_toml(const std::string& path) {
-  const std::string text = read_text_file(path);
-  if (text.empty() && !std::filesystem::exists(path)) throw InputError(path + ": cannot read the study file");
+  const std::string text = read_input_file(path, "study");
   try {
     return toml::parse(std::string_view(text), std::string_view(path));
   } catch (const toml::parse_error& e) {

@@ -8,7 +8,7 @@
 
 namespace arksph {
 
-// The whole file as text ("" if it cannot be read).
+// The whole scene file as text; InputError if it cannot be read (io/input_file.hpp).
 std::string read_text_file(const std::string& path);
 
 // The parsed study file; InputError "PATH: cannot read ..." or "PATH:LINE:COLUMN: syntax error".

@@ -4,12 +4,15 @@
 #include <toml++/toml.h>
 
 #include <charconv>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 
 namespace arksph {
 
@@ -40,6 +43,45 @@ std::string folder_part(const std::string& text) {
   return out;
 }
 
+// FNV-1a, 64 bits: a stable hash for folder names (the same on every machine and run).
+std::string short_hash(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char out[17];
+  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+  return std::string(out, 10);
+}
+
+// A value's part of a folder name: as it is up to kMaxValuePart characters; a longer one is cut
+// and ends in a hash of the whole value, so that names stay short and distinct.
+constexpr std::size_t kMaxValuePart = 40;
+std::string value_part(const std::string& value) {
+  const std::string part = folder_part(value);
+  if (part.size() <= kMaxValuePart) return part;
+  return part.substr(0, kMaxValuePart - 11) + "~" + short_hash(value);
+}
+
+// Whole folder names stay well below NAME_MAX (255 bytes) however many keys are varied.
+constexpr std::size_t kMaxFolderName = 120;
+
+// True if setting `a` also sets `b` or the reverse: the same key, or one a table holding the other.
+bool overlapping_keys(const std::string& a, const std::string& b) {
+  const auto within = [](const std::string& inner, const std::string& outer) {
+    return inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 && inner[outer.size()] == '.';
+  };
+  return a == b || within(a, b) || within(b, a);
+}
+
+std::string set_key(const std::string& set) {
+  const auto eq = set.find('=');
+  std::string key = set.substr(0, eq);
+  const auto b = key.find_first_not_of(" \t"), e = key.find_last_not_of(" \t");
+  return b == std::string::npos ? std::string() : key.substr(b, e - b + 1);
+}
+
 void expand(Sweep& sw) {
   std::size_t count = 1;
   for (const auto& ax : sw.axes) count *= ax.values.size();
@@ -60,9 +102,11 @@ void expand(Sweep& sw) {
         run.values.push_back(point[k]);
         run.sets.push_back(key + "=" + point[k]);
         const auto dot = key.rfind('.');
-        run.name += "_" + folder_part(key.substr(dot == std::string::npos ? 0 : dot + 1)) + "-" + folder_part(point[k]);
+        run.name += "_" + folder_part(key.substr(dot == std::string::npos ? 0 : dot + 1)) + "-" + value_part(point[k]);
       }
     }
+    if (run.name.size() > kMaxFolderName)  // many varied keys: the index keeps it unique, the hash tells the values
+      run.name = run.name.substr(0, kMaxFolderName - 11) + "~" + short_hash(run.name);
     sw.runs.push_back(std::move(run));
   }
 }
@@ -80,7 +124,7 @@ Sweep read_sweep_text(const std::string& text, const std::string& source) {
       if (c == '\n') c = ' ';
     throw InputError(msg);
   }
-  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(source + ": " + key + ": " + why); };
+  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(source + ": " + echo_value(key) + ": " + why); };
   for (const auto& [k, v] : root)
     if (k.str() != "sweep" && k.str() != "vary") throw bad(std::string(k.str()), "unknown key (expected [sweep] and [[vary]])");
   const toml::table* sw_tab = root["sweep"].as_table();
@@ -163,16 +207,28 @@ Sweep read_sweep_text(const std::string& text, const std::string& source) {
     }
   }
   if (sw.axes.empty()) throw bad("vary", "no [[vary]] table: nothing to sweep");
+  for (const std::string& set : sw.common_sets)
+    if (const std::string key = varied_key_overridden(sw, set); !key.empty())
+      throw bad("sweep.set", echo_value(set) + ": " + echo_value(key) + " is varied too; set it in one place only");
+  for (const auto& ax : sw.axes)
+    for (const std::string& key : ax.keys)
+      if (overlapping_keys(key, "output.directory"))
+        throw bad("vary", echo_value(key) + ": the batch gives every run its own output folder; it cannot be varied");
   expand(sw);
   return sw;
 }
 
+std::string varied_key_overridden(const Sweep& sw, const std::string& set) {
+  const std::string key = set_key(set);
+  if (overlapping_keys(key, "output.directory")) return "output.directory (the batch gives every run its own folder)";
+  for (const auto& ax : sw.axes)
+    for (const std::string& varied : ax.keys)
+      if (overlapping_keys(key, varied)) return varied;
+  return {};
+}
+
 Sweep read_sweep_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the sweep file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return read_sweep_text(ss.str(), path);
+  return read_sweep_text(read_input_file(path, "sweep"), path);
 }
 
 }  // namespace arksph

@@ -17,7 +17,10 @@
 //
 // Run folders are named <index>_<last key part>-<value>_..., e.g.
 // "03_kernel-wendland_quintic_integrator-ARKODE_HEUN_EULER_2_1_2", with characters other than
-// [A-Za-z0-9._-] replaced by '_': deterministic, so a second invocation finds its runs again.
+// [A-Za-z0-9._-] replaced by '_': deterministic, so a second invocation finds its runs again. A
+// value longer than 40 characters is cut and ends in "~" and a hash of the whole value; a name
+// longer than 120 characters likewise. A key may be varied or set (sweep.set, batch --set), not
+// both; output.directory is neither (each run has its own folder).
 #pragma once
 #include <string>
 #include <vector>
@@ -49,5 +52,9 @@ struct Sweep {
 // Reads and checks the sweep file; throws InputError "<file>: <key>: <reason>" (one line).
 Sweep read_sweep_file(const std::string& path);
 Sweep read_sweep_text(const std::string& text, const std::string& source);
+
+// The varied key that the override "KEY=VALUE" would replace (the same key, or a table holding it,
+// or a key inside it), or output.directory; "" if none.
+std::string varied_key_overridden(const Sweep& sw, const std::string& set);
 
 }  // namespace arksph

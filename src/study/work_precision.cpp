@@ -106,7 +106,7 @@ ParticleVelocities final_velocities(const std::string& dir, double* time, long* 
 
 WorkPrecisionStudy read_work_precision_study(const std::string& path, const std::vector<std::string>& extra_sets) {
   const toml::table root = read_study_toml(path);
-  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + key + ": " + why); };
+  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + echo_value(key) + ": " + why); };
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
     if (key != "study" && key != "scheme" && key != "resolution")

@@ -11,6 +11,7 @@
 #include "checkpoint_sample.hpp"
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
+#include "io/csv_writer.hpp"  // temporary_path
 #include "io/scene_reader.hpp"
 #include "test_support.hpp"
 
@@ -27,7 +28,7 @@ TEST_CASE("checkpoint: write + read round trip is bit-exact") {
     CAPTURE(n);
     const Checkpoint c = sample_checkpoint(n, dim, rho);
     write_checkpoint(dir / "checkpoint.h5", c);
-    CHECK_FALSE(fs::exists(dir / "checkpoint.h5.tmp"));
+    CHECK_FALSE(fs::exists(temporary_path(dir / "checkpoint.h5")));
     check_equal(read_checkpoint(dir / "checkpoint.h5"), c);
   }
 }
@@ -44,10 +45,10 @@ TEST_CASE("checkpoint: unreadable files give one-line InputErrors naming the fil
     CHECK(what.find("text.h5") != std::string::npos);
     CHECK(what.find('\n') == std::string::npos);
   }
-  CHECK_THROWS_AS(write_checkpoint(dir / "no/such/dir/checkpoint.h5", sample_checkpoint(3, 2, true)), std::runtime_error);
+  CHECK_THROWS_AS(write_checkpoint(dir / "no/such/dir/checkpoint.h5", sample_checkpoint(3, 2, true)), OutputError);
 }
 
-// A kill -9 while the next checkpoint is written leaves `checkpoint.h5.tmp` cut short beside the
+// A kill -9 while the next checkpoint is written leaves its temporary cut short beside the
 // previous, complete `checkpoint.h5`; the reader opens the latter and ignores the former.
 TEST_CASE("checkpoint: an interrupted write leaves the previous checkpoint valid") {
   ScratchDir dir("killed");
@@ -58,13 +59,13 @@ TEST_CASE("checkpoint: an interrupted write leaves the previous checkpoint valid
   next.time = 0.5;
   write_checkpoint(dir / "other.h5", next);
   const std::string full = slurp(dir / "other.h5");
-  std::ofstream(path + ".tmp", std::ios::binary).write(full.data(), static_cast<std::streamsize>(full.size() / 2));
+  std::ofstream(temporary_path(path), std::ios::binary).write(full.data(), static_cast<std::streamsize>(full.size() / 2));
   check_equal(read_checkpoint(path), before);
-  CHECK_THROWS_AS(read_checkpoint(path + ".tmp"), InputError);  // the torn file itself is rejected cleanly
+  CHECK_THROWS_AS(read_checkpoint(temporary_path(path)), InputError);  // the torn file itself is rejected cleanly
 
   // The next successful write replaces the stale temporary.
   write_checkpoint(path, next);
-  CHECK_FALSE(fs::exists(path + ".tmp"));
+  CHECK_FALSE(fs::exists(temporary_path(path)));
   CHECK(read_checkpoint(path).time == 0.5);
 }
 

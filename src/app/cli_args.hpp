@@ -1,0 +1,30 @@
+// Command-line arguments as strings, with "--opt=value" split into "--opt" "value" for the options
+// that take a value, so that both spellings work everywhere.
+#pragma once
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace arksph {
+
+inline std::vector<std::string> split_option_values(int argc, char** argv,
+                                                    std::initializer_list<const char*> with_value) {
+  std::vector<std::string> args;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto eq = a.find('=');
+    bool split = false;
+    if (a.rfind("--", 0) == 0 && eq != std::string::npos)
+      for (const char* opt : with_value)
+        if (a.compare(0, eq, opt) == 0) split = true;
+    if (split) {
+      args.push_back(a.substr(0, eq));
+      args.push_back(a.substr(eq + 1));
+    } else {
+      args.push_back(a);
+    }
+  }
+  return args;
+}
+
+}  // namespace arksph

@@ -1,0 +1,26 @@
+// Frame rows in particle id order. The run keeps its particles in a memory order that changes
+// (method.reorder_every re-sorts them by cell); the VTP files list them by id instead, so that row k
+// of every frame is the same particle and frames can be compared row by row.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "io/frame.hpp"
+
+namespace arksph {
+
+// A copy of a frame's arrays with the rows sorted by id (frame() views them). If the rows are in id
+// order already, nothing is copied and frame() is the original view.
+class FrameInIdOrder {
+ public:
+  explicit FrameInIdOrder(const Frame& f);
+  const Frame& frame() const { return view_; }
+
+ private:
+  Frame view_;
+  std::vector<std::vector<double>> doubles_;
+  std::vector<std::int64_t> id_;
+  std::vector<std::int32_t> phase_;
+};
+
+}  // namespace arksph

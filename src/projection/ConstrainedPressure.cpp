@@ -1,6 +1,7 @@
 #include "projection/ConstrainedPressure.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "core/particle_order.hpp"
@@ -8,11 +9,29 @@
 
 namespace arksph {
 
+double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
+  // U: the largest initial particle speed or wall speed; a fluid starting at rest with still walls
+  // relaxes over the run (U = h / time.end).
+  const ParticleSet& p = rhs.particles();
+  double u2 = 0;
+  for (std::size_t a = 0; a < p.n; ++a) {
+    double s2 = 0;
+    for (int k = 0; k < p.dim; ++k) s2 += p.init_vel[k][a] * p.init_vel[k][a];
+    u2 = std::max(u2, s2);
+  }
+  double speed = std::sqrt(u2);
+  for (int s = 0; s < 2 * scene.dimension; ++s)
+    speed = std::max(speed, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
+  const double h = rhs.kernel().h();
+  if (!(speed > 0)) speed = h / scene.end;
+  return scene.constraint_relaxation * speed / h;
+}
+
 ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
       solver_key_(scene.ppe_solver),
       tolerance_(scene.ppe_tolerance),
-      relaxation_(scene.constraint_relaxation),
+      relaxation_(relaxation_rate(scene, rhs)),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)) {}
 

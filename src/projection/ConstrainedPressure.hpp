@@ -16,7 +16,7 @@
 //
 // where L = D G (smooth pressure modes, to the approximation of eq. 19) a divergence-free start
 // stays divergence-free, and what the time integration and L's approximation leave decays at the
-// rate alpha (method.constraint_relaxation; Baumgarte's stabilisation of an index-reduced
+// rate alpha (alpha = beta U/h, beta = method.constraint_relaxation; Baumgarte's stabilisation of an index-reduced
 // constraint). The pressure is the discrete counterpart of div(grad p / rho) = div(a*) -
 // tr(grad u grad u) of an incompressible flow.
 //
@@ -40,6 +40,9 @@
 
 namespace arksph {
 
+// alpha = method.constraint_relaxation x U / h, U the largest initial or wall speed.
+double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs);
+
 struct ConstraintReport {
   int iterations = 0;
   double relative_residual = 0;
@@ -54,6 +57,7 @@ class ConstrainedPressure {
   // u <- u - G phi with L phi = D u (one approximate projection of the start), fields refreshed here.
   ConstraintReport project_velocity(double t, double* y);
   const std::vector<double>& pressure() const { return p_; }
+  double relaxation() const { return relaxation_; }
   std::string solver_name() const { return solver_->name(); }
   void forget_warm_start();
   void permute_particles(const std::vector<std::uint32_t>& from);

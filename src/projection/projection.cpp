@@ -23,10 +23,10 @@ double since(std::chrono::steady_clock::time_point t0) {
 const std::vector<Param>& projection_params() {
   static const std::vector<Param> params = {
       choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained"})
-          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y), exact projection, the table's temporal order")
+          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md)")
           .to(&Scene::projection),
-      number("method.constraint_relaxation", 0.0).in(at_least(0)).unit("1/s")
-          .doc("constrained projection: rate at which a divergence left by the time integration decays, d(Du)/dt = -alpha Du")
+      number("method.constraint_relaxation", 4.0).in(at_least(0))
+          .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
           .to(&Scene::constraint_relaxation),
       choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})
           .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; klu only)")

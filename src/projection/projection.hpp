@@ -44,6 +44,7 @@ class Projection {
   // method.projection = "constrained": the pressure is part of f(t, y) (constrain), nothing is done
   // after a step or stage, and the initial velocity is projected once (project_initial).
   bool constrained() const { return constrained_ != nullptr; }
+  const ConstrainedPressure* constraint() const { return constrained_.get(); }
   // After rhs.eval(t, y, ydot): the pressure acceleration added to ydot (au, av: an acceleration
   // the constraint must also see, IMEX's implicit partition, or null).
   void constrain(const double* y, double* ydot, const double* au, const double* av);

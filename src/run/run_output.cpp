@@ -13,6 +13,7 @@
 #include "core/expression.hpp"
 #include "io/frame_order.hpp"
 #include "io/vtp_writer.hpp"
+#include "projection/divergence_operator.hpp"
 
 namespace arksph {
 
@@ -50,6 +51,8 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   const FluidFields& f = rhs.fields();
   last_ = flow_metrics(f, d0);
   last_t_ = t;
+  const StateLayout& L = rhs.layout();
+  last_divergence_ = divergence_rms(f, y + L.vel(0), L.dim == 2 ? y + L.vel(1) : nullptr);
   std::vector<double> row = {t, stats.last_step, static_cast<double>(stats.steps), last_.kinetic_energy,
                              last_.max_speed, last_.cv, last_.density_mean, last_.density_rms};
   if (scene_.ghia_re) {
@@ -183,6 +186,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
     ppe_json.set("seconds_per_solve", ps.solves ? ps.seconds / ps.solves : 0.0);
     ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
+    if (const ConstrainedPressure* c = model_.projection->constraint()) ppe_json.set("constraint_relaxation_rate", c->relaxation());
     j.set("ppe", ppe_json);
     if (const DensityCorrection* c = model_.projection->correction()) {
       Json cj = Json::object();
@@ -195,6 +199,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   Json metrics = Json::object();
   metrics.set("kinetic_energy", last_.kinetic_energy).set("max_speed", last_.max_speed).set("cv", last_.cv);
   metrics.set("density_mean", last_.density_mean).set("density_rms", last_.density_rms);
+  metrics.set("divergence_rms", last_divergence_);
   for (const char* key : {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms", "poiseuille_rms",
                           "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2", "bubble_y", "spike_y",
                           "upper_density_mean", "upper_density_rms"})

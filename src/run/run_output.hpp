@@ -45,6 +45,7 @@ class RunOutput {
   TimeseriesCsv csv_;
   int frames_ = 0;
   double last_t_ = 0;
+  double last_divergence_ = 0;  // r.m.s. of D u at the last output (projection/divergence_operator.hpp)
   FlowMetrics last_;
   Json case_metrics_ = Json::object();
   double eps_max_window_ = 0;  // Poiseuille: max eps for t* in [0.5, 2]

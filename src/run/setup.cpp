@@ -61,10 +61,12 @@ Model build_model(const Scene& scene) {
     if (scheme.grid) {
       const GridSpec g = gpps_grid(scene);
       model.terms.push_back("projection:gpps-klu:" + std::to_string(g.nx) + "x" + std::to_string(g.ny));
+    } else if (model.projection->constrained()) {
+      model.terms.push_back("projection:constrained-ppe-" + scene.ppe_solver);
     } else {
       model.terms.push_back("projection:ppe-" + scene.ppe_solver);
     }
-    if (scene.centre_positions) model.terms.push_back("projection:centred_positions");
+    if (scene.centre_positions && !model.projection->constrained()) model.terms.push_back("projection:centred_positions");
     if (scene.projection_points == "stages") model.terms.push_back("projection:stages");
     if (scene.density_correction != "none") model.terms.push_back("correction:" + scene.density_correction);
   }

@@ -71,7 +71,7 @@ struct Scene {
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";
   std::string projection = "cummins_rudman";  // isph: "cummins_rudman" (after each step) | "constrained" (pressure in f)
-  double constraint_relaxation = 4.0;  // constrained projection: alpha = this x U/h, the decay rate of D u
+  double constraint_relaxation = 1.0;  // constrained projection: alpha = this x U/h, the decay rate of D u
   std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_divergence = "cummins_rudman";  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
   std::string ppe_pressure_level = "zero_mean";  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)

@@ -25,7 +25,7 @@ const std::vector<Param>& projection_params() {
       choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained"})
           .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md)")
           .to(&Scene::projection),
-      number("method.constraint_relaxation", 4.0).in(at_least(0))
+      number("method.constraint_relaxation", 1.0).in(at_least(0))
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
           .to(&Scene::constraint_relaxation),
       choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})

@@ -10,10 +10,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 #include <stdexcept>
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/memory_budget.hpp"
 
 namespace arksph {
 
@@ -274,6 +276,12 @@ Checkpoint read_file(const std::string& path) {
   const long n = read_int64(file, "particles");
   if (n <= 0) throw std::runtime_error("particles = " + std::to_string(n));
   c.n = static_cast<std::size_t>(n);
+  // The arrays below take n values each: a count no memory holds is refused before allocating.
+  const double bytes = static_cast<double>(n) * (8.0 * (2 * c.dimension + 2 + 2) + 8 + 4);
+  const MemoryLimit limit = memory_limit();
+  if (bytes > limit.bytes)
+    throw std::runtime_error("particles = " + std::to_string(n) + " needs " + format_bytes(bytes) +
+                             ", more than the memory limit of " + format_bytes(limit.bytes) + " (" + limit.source + ")");
   c.time = read_double(file, "time");
   c.steps = read_int64(file, "steps");
   c.rhs_evals = read_int64(file, "rhs_evals");
@@ -335,6 +343,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   try {
     QuietHdf5 quiet;
     return read_file(path);
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemory("an allocation failed while reading checkpoint " + path);
   } catch (const std::exception& e) {
     throw InputError(path + ": cannot read checkpoint: " + e.what());
   }

@@ -76,6 +76,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const StateLayout& layout = rhs.layout();
   print_run_header(scene, model);
   const std::string particles = std::to_string(layout.n) + " particles";
+  rhs.set_between_phases(poll_setup_interrupt);  // until the first step (see below)
 
   set_activity("setting up the initial state of " + particles);
   std::vector<double> y0(layout.size());
@@ -134,6 +135,8 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   set_activity("writing the output at t = 0 of " + particles);
   if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
   std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
+  poll_setup_interrupt();
+  rhs.set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
   set_activity("stepping " + particles);
   double t = checkpoints.start_time();
   int frame = checkpoints.first_frame();

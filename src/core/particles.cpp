@@ -6,7 +6,6 @@
 
 #include "core/errors.hpp"
 #include "core/expression.hpp"
-#include "run/interrupt.hpp"
 
 namespace arksph {
 
@@ -18,7 +17,7 @@ std::string format_coord(double v) {
 }
 }  // namespace
 
-ParticleSet make_lattice(const Scene& scene) {
+ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_row) {
   ParticleSet ps;
   ps.dim = scene.dimension;
   ps.dx = scene.spacing;
@@ -42,7 +41,7 @@ ParticleSet make_lattice(const Scene& scene) {
   }
   std::int64_t next_id = 0;
   for (long j = 0; j < count[1]; ++j) {
-    poll_setup_interrupt();
+    if (each_row) each_row();
     for (long i = 0; i < count[0]; ++i) {
       const double x = scene.min[0] + (static_cast<double>(i) + 0.5) * scene.spacing;
       const double y = ps.dim == 2 ? scene.min[1] + (static_cast<double>(j) + 0.5) * scene.spacing : 0.0;

@@ -15,7 +15,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
-#include "core/memory_budget.hpp"
+#include "core/memory_limit.hpp"
 
 namespace arksph {
 

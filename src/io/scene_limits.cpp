@@ -42,9 +42,9 @@ void check_scales(const std::map<std::string, Section>& sections, const Scene& s
                       " across) is too large: its squared size overflows a double");
     const double resolution = std::nextafter(coordinate, INFINITY) - coordinate;
     if (!(s.spacing >= 1e6 * resolution))
-      fluid.fail("spacing", format_number(s.spacing) + " is below a millionth of the double resolution " +
-                                format_number(resolution) + " of the coordinates near " + format_number(coordinate) +
-                                " (domain.min/max): particles would not be told apart");
+      fluid.fail("spacing", format_number(s.spacing) + " is less than 10^6 times the spacing of doubles (" +
+                                format_number(resolution) + ") at the coordinates near " + format_number(coordinate) +
+                                " (domain.min/max): positions would be rounded by more than a millionth of it");
   }
 }
 

@@ -7,7 +7,7 @@
 #include "boundary/wall_velocity_rules.hpp"
 #include "core/errors.hpp"
 #include "core/expression.hpp"
-#include "core/memory_budget.hpp"
+#include "run/memory_estimate.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
 #include "rhs/term_registry.hpp"
@@ -38,7 +38,7 @@ Model build_model(const Scene& scene) {
   Model model;
   check_run_memory(scene);  // before anything large is allocated
   set_activity("building the lattice of " + std::to_string(std::llround(estimate_run_memory(scene).particles)) + " particles");
-  model.particles = make_lattice(scene);
+  model.particles = make_lattice(scene, poll_setup_interrupt);
   poll_setup_interrupt();
   check_initial_body_force(scene, model.particles);
   poll_setup_interrupt();

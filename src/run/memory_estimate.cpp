@@ -1,6 +1,7 @@
 #include "run/memory_estimate.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <sstream>
 
@@ -39,13 +40,17 @@ void check_run_memory(const Scene& scene) {
   const MemoryEstimate e = estimate_run_memory(scene);
   const MemoryLimit limit = memory_limit();
   if (e.bytes <= limit.bytes) return;
+  auto count = [](double v) {  // 2500, 1.26e+05
+    char buf[32];
+    std::snprintf(buf, sizeof buf, v < 1e5 ? "%.0f" : "%.3g", v);
+    return std::string(buf);
+  };
   std::ostringstream msg;
-  msg.precision(3);
-  msg << scene.source << ": " << e.key << ": the run needs at least " << format_bytes(e.bytes) << " (" << e.particles
-      << " particles, " << e.pairs << " neighbour pairs";
-  if (e.grid_cells > 0) msg << ", " << e.grid_cells << " grid cells";
+  msg << scene.source << ": " << e.key << ": the run needs at least " << format_bytes(e.bytes) << " ("
+      << count(e.particles) << " particles, " << count(e.pairs) << " neighbour pairs";
+  if (e.grid_cells > 0) msg << ", " << count(e.grid_cells) << " grid cells";
   msg << "), more than the memory limit of " << format_bytes(limit.bytes) << " (" << limit.source
-      << "; ARKSPH_MEMORY_LIMIT sets another)";
+      << (limit.source == "ARKSPH_MEMORY_LIMIT" ? ")" : "; ARKSPH_MEMORY_LIMIT sets another)");
   throw InputError(msg.str());
 }
 

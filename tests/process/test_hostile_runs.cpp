@@ -62,6 +62,15 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& log, int bl
   dup2(fd, 1);
   dup2(fd, 2);
   setenv("OMP_NUM_THREADS", "1", 1);
+  // An ignored disposition survives exec and arksph keeps it (e.g. SIGHUP under nohup): the test
+  // starts from the defaults, unblocked.
+  sigset_t all;
+  sigemptyset(&all);
+  for (int s : {SIGHUP, SIGINT, SIGQUIT, SIGTERM}) {
+    signal(s, SIG_DFL);
+    sigaddset(&all, s);
+  }
+  sigprocmask(SIG_UNBLOCK, &all, nullptr);
   if (blocked_pending) {
     sigset_t set;
     sigemptyset(&set);

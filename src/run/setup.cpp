@@ -7,12 +7,12 @@
 #include "boundary/wall_velocity_rules.hpp"
 #include "core/errors.hpp"
 #include "core/expression.hpp"
-#include "run/memory_estimate.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 #include "run/interrupt.hpp"
+#include "run/memory_estimate.hpp"
 
 namespace arksph {
 
@@ -37,7 +37,8 @@ void check_initial_body_force(const Scene& scene, const ParticleSet& p) {
 Model build_model(const Scene& scene) {
   Model model;
   check_run_memory(scene);  // before anything large is allocated
-  set_activity("building the lattice of " + std::to_string(std::llround(estimate_run_memory(scene).particles)) + " particles");
+  const long long particles = std::llround(estimate_run_memory(scene).particles);
+  set_activity("building the lattice of " + std::to_string(particles) + " particles");
   model.particles = make_lattice(scene, poll_setup_interrupt);
   poll_setup_interrupt();
   check_initial_body_force(scene, model.particles);

@@ -16,13 +16,14 @@ struct RunOptions {
 };
 
 struct RunResult {
-  int exit_code = 0;  // 0 ok, 3 numerical failure
+  int exit_code = 0;  // 0 ok, 3 numerical failure, 6 out of memory, 128 + signal
   std::string message;
-  bool interrupted = false;  // SIGINT/SIGTERM: exit code 128 + signal, checkpoint written
+  bool interrupted = false;  // SIGHUP/SIGINT/SIGQUIT/SIGTERM: exit code 128 + signal, checkpoint written
   std::string checkpoint;    // the last checkpoint written ("" if none)
 };
 
-// Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up.
+// Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up,
+// InterruptedDuringSetup for a signal before the first step (run/interrupt.hpp).
 RunResult run_simulation(const Scene& scene, const RunOptions& options);
 
 }  // namespace arksph

@@ -236,6 +236,10 @@ std::string read_string(hid_t obj, const char* name) {
     return s;
   }
   const std::size_t size = H5Tget_size(ftype);
+  const MemoryLimit limit = memory_limit();
+  if (static_cast<double>(size) > limit.bytes)
+    throw std::runtime_error(std::string("attribute '") + name + "' of " + format_bytes(static_cast<double>(size)) +
+                             " exceeds the memory limit of " + format_bytes(limit.bytes) + " (" + limit.source + ")");
   check(H5Tset_size(mtype, size + 1), "H5Tset_size");
   std::string buf(size + 1, '\0');
   check(H5Aread(attr, mtype, buf.data()), std::string("attribute ") + name);

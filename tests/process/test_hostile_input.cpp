@@ -172,3 +172,29 @@ TEST_CASE("hostile input: a checkpoint claiming more particles than memory holds
   const CliOutcome o = run_cli("run --restart " + checkpoint + " --quiet --set time.end=0.02", "", 120);
   check_refused(o, "particles = 1000000000000000", "memory limit");
 }
+
+TEST_CASE("hostile input: a checkpoint attribute larger than the memory limit exits 2 before allocating") {
+  const Scenes s;
+  REQUIRE(s.run("").code == 0);
+  const std::string checkpoint = s.out + "/checkpoint.h5";
+  {  // scene_toml replaced by a fixed-length string of 30,000 bytes (compact storage holds < 64 kB)
+    const hid_t file = H5Fopen(checkpoint.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    REQUIRE(H5Adelete(file, "scene_toml") >= 0);
+    const std::string text(30000, '#');
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, text.size());
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attr = H5Acreate2(file, "scene_toml", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(attr >= 0);
+    CHECK(H5Awrite(attr, type, text.data()) >= 0);
+    H5Aclose(attr);
+    H5Sclose(space);
+    H5Tclose(type);
+    H5Fclose(file);
+  }
+  // A limit of 20 kB: the 100 particles fit (6 kB), the attribute does not.
+  const CliOutcome o =
+      run_cli("run --restart " + checkpoint + " --quiet --set time.end=0.02", "ARKSPH_MEMORY_LIMIT=20K", 120);
+  check_refused(o, "attribute 'scene_toml' of 30 kB", "memory limit of 20.5 kB");
+}

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,7 @@ int cmd_run(int argc, char** argv) {
   }
   if (!restart_path.empty() && !scene_path.empty())
     throw arksph::InputError(scene_path + ": give either a scene file or --restart FILE, not both");
+  arksph::install_interrupt_handlers();  // before the set-up, which polls for a signal (run/interrupt.hpp)
   arksph::Checkpoint checkpoint;  // --restart: the scene is the one stored in the checkpoint
   if (!restart_path.empty()) {
     checkpoint = arksph::read_checkpoint(restart_path);
@@ -109,7 +111,6 @@ int cmd_run(int argc, char** argv) {
       !restart_path.empty() ? arksph::read_scene_text(checkpoint.scene_toml, restart_path + " [scene_toml]", sets)
       : scene_path.empty()  ? arksph::read_scene_text(arksph::default_scene_toml(), "<embedded default>", sets)
                             : arksph::read_scene_file(scene_path, sets);
-  arksph::install_interrupt_handlers();
   const arksph::RunResult r = arksph::run_simulation(scene, options);
   if (r.interrupted) {
     std::fprintf(stderr, "arksph: %s; checkpoint written to %s (continue: arksph run --restart %s)\n",
@@ -164,6 +165,15 @@ int main(int argc, char** argv) {
   } catch (const arksph::OutputError& e) {
     std::fprintf(stderr, "arksph: %s\n", e.what());
     return 5;
+  } catch (const arksph::OutOfMemory& e) {
+    std::fprintf(stderr, "arksph: out of memory: %s\n", e.what());
+    return 6;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "arksph: out of memory: an allocation failed while %s\n", arksph::activity().c_str());
+    return 6;
+  } catch (const arksph::InterruptedDuringSetup& e) {
+    std::fprintf(stderr, "arksph: %s\n", e.what());
+    return 128 + e.signal;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "arksph: internal error (a bug, please report it): %s\n", e.what());
     return 1;

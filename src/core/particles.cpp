@@ -17,7 +17,7 @@ std::string format_coord(double v) {
 }
 }  // namespace
 
-ParticleSet make_lattice(const Scene& scene) {
+ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_row) {
   ParticleSet ps;
   ps.dim = scene.dimension;
   ps.dx = scene.spacing;
@@ -41,6 +41,7 @@ ParticleSet make_lattice(const Scene& scene) {
   }
   std::int64_t next_id = 0;
   for (long j = 0; j < count[1]; ++j) {
+    if (each_row) each_row();
     for (long i = 0; i < count[0]; ++i) {
       const double x = scene.min[0] + (static_cast<double>(i) + 0.5) * scene.spacing;
       const double y = ps.dim == 2 ? scene.min[1] + (static_cast<double>(j) + 0.5) * scene.spacing : 0.0;
@@ -61,7 +62,14 @@ ParticleSet make_lattice(const Scene& scene) {
                          format_coord(y) + ") outside the domain");
       ps.init_pos[0].push_back(px);
       if (ps.dim == 2) ps.init_pos[1].push_back(py);
-      for (int k = 0; k < ps.dim; ++k) ps.init_vel[k].push_back(vel[k].eval(x, y, 0.0));
+      for (int k = 0; k < ps.dim; ++k) {
+        const double u = vel[k].eval(x, y, 0.0);
+        if (!std::isfinite(u))  // NaN or infinity: the run would fail at its first step without saying why
+          throw InputError(scene.source + ": initial.velocity: component " + std::to_string(k) + " (\"" +
+                           scene.initial_velocity[k] + "\") is " + message_number(u) + " at the particle at (" +
+                           format_coord(x) + ", " + format_coord(y) + ")");
+        ps.init_vel[k].push_back(u);
+      }
       ps.mass.push_back(rho * cell_volume);
       ps.rho0.push_back(rho);
       ps.id.push_back(next_id++);

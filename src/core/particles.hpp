@@ -3,6 +3,7 @@
 // laid out as structure-of-arrays blocks (see StateLayout).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/scene.hpp"
@@ -40,6 +41,9 @@ struct ParticleSet {
 
 // Fills the domain with a square lattice, spacing dx, particles at min + (i + 1/2) dx; assigns
 // phases by the [[phase]] regions (the last matching region wins) and the initial velocity field.
-ParticleSet make_lattice(const Scene& scene);
+// A NaN or infinite initial velocity is bad input (InputError naming the key and the particle).
+// `each_row`, if given, is called before each row of particles (it may throw: the set-up polls for
+// a signal this way).
+ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_row = {});
 
 }  // namespace arksph

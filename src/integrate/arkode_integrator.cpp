@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "core/errors.hpp"
@@ -13,7 +14,8 @@ namespace arksph {
 
 ArkodeIntegrator::ArkodeIntegrator(const ArkodeStepModule& module, const std::vector<double>& y0, double t0,
                                    const StepOptions& opt)
-    : module_(module), stab_(opt.stability), n_(y0.size()), t_(t0), fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt) {
+    : module_(module), stab_(opt.stability), n_(y0.size()), t_(t0), fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt),
+      describe_entry_(opt.describe_entry) {
   if (SUNContext_Create(nullptr, &ctx_) < 0) throw NumericalFailure("ARKODE: SUNContext_Create failed");
   y_ = new_serial_vector(static_cast<sunindextype>(n_), ctx_);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
@@ -76,7 +78,10 @@ int ArkodeIntegrator::evaluate_rhs(const RhsFunction& f, double t, N_Vector y, N
     f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
     const double* d = N_VGetArrayPointer(ydot);
     for (std::size_t i = 0; i < n_; ++i)
-      if (!std::isfinite(d[i])) return 1;  // recoverable: ARKODE retries with a smaller step
+      if (!std::isfinite(d[i])) {
+        if (!non_finite_.found) non_finite_ = {true, t, d[i], i};
+        return 1;  // recoverable: ARKODE retries with a smaller step
+      }
     return 0;
   });
 }
@@ -87,8 +92,16 @@ int ArkodeIntegrator::stability_cb(N_Vector y, double t, double* hstab, void* us
 }
 
 void ArkodeIntegrator::evolve(double tout, int itask) {
+  non_finite_ = {};
   const int flag = module_.evolve(mem_, tout, y_, &t_, itask);
   rethrow_callback_error(callback_error_);  // the callback's own exception, not ARKODE's flag for it
+  if (flag < 0 && non_finite_.found) {  // ARKODE gave up on a right-hand side that stayed non-finite
+    char at[48];
+    std::snprintf(at, sizeof at, "t = %.9g, ", non_finite_.t);
+    throw NumericalFailure(at + (describe_entry_ ? describe_entry_(non_finite_.index, non_finite_.value)
+                                                 : "right-hand side entry " + std::to_string(non_finite_.index) +
+                                                       " = " + std::to_string(non_finite_.value)));
+  }
   if (flag < 0) {
     char* name = module_.return_flag_name(flag);
     const std::string flag_name = name ? name : "unknown";

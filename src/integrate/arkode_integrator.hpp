@@ -81,7 +81,8 @@ class ArkodeIntegrator : public TimeIntegrator {
   // Throws NumericalFailure when a call `module.name + call` failed (flag < 0).
   void check(int flag, const char* call);
   // A right-hand side callback: ydot = f(t, y); flag 1 (recoverable: ARKODE retries with a smaller
-  // step) when ydot is not finite, kCallbackFailed when f threw.
+  // step) when ydot is not finite, kCallbackFailed when f threw. The first non-finite entry is kept:
+  // if ARKODE then gives up, the failure names it (time, entry via StepOptions::describe_entry).
   int evaluate_rhs(const RhsFunction& f, double t, N_Vector y, N_Vector ydot) noexcept;
   // Runs the body of a callback with its exception kept for the wrapper (callback_guard.hpp).
   template <class Body>
@@ -116,6 +117,12 @@ class ArkodeIntegrator : public TimeIntegrator {
   double fixed_dt_ = 0;
   double current_h_ = 0;  // fixed-step mode: the step currently set in ARKODE (the last one may be shorter)
   std::string last_message_;  // last ARKODE warning or error
+  EntryDescription describe_entry_;
+  struct NonFinite {
+    bool found = false;
+    double t = 0, value = 0;
+    std::size_t index = 0;
+  } non_finite_;  // the first non-finite right-hand side entry of the current evolve call
   std::exception_ptr callback_error_;
 };
 

@@ -36,7 +36,7 @@ const std::vector<Param>& time_params() {
       choice("time.integrator", "ARKODE_HEUN_EULER_2_1_2").family("erk_table")
           .doc("ARKODE explicit Butcher table").to(&Scene::integrator),
       number("time.dt", 0.0).in(at_least(0)).unit("s")
-          .doc("0: adaptive, limited by the stability bounds; > 0: fixed step").to(&Scene::dt),
+          .doc("0: adaptive, limited by the stability bounds; > 0: fixed step, at least the spacing of doubles at time.end").to(&Scene::dt),
       number("time.cfl", 0.25).in(between(0, 1, true, false))
           .doc("coefficient of the stability limits (Szewc et al. 2012 eqs. 34-35)").to(&Scene::cfl),
       number("time.rtol", 1e-2).in(above(0))

@@ -10,10 +10,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 #include <stdexcept>
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/memory_limit.hpp"
 #include "io/csv_writer.hpp"  // temporary_path
 
 namespace arksph {
@@ -264,6 +266,10 @@ std::string read_string(hid_t obj, const char* name) {
     return s;
   }
   const std::size_t size = H5Tget_size(ftype);
+  const MemoryLimit limit = memory_limit();
+  if (static_cast<double>(size) > limit.bytes)
+    throw std::runtime_error(std::string("attribute '") + name + "' of " + format_bytes(static_cast<double>(size)) +
+                             " exceeds the memory limit of " + format_bytes(limit.bytes) + " (" + limit.source + ")");
   check(H5Tset_size(mtype, size + 1), "H5Tset_size");
   std::string buf(size + 1, '\0');
   check(H5Aread(attr, mtype, buf.data()), std::string("attribute ") + name);
@@ -305,6 +311,12 @@ Checkpoint read_file(const std::string& path) {
   const long n = read_int64(file, "particles");
   if (n <= 0) throw std::runtime_error("particles = " + std::to_string(n));
   c.n = static_cast<std::size_t>(n);
+  // The arrays below take n values each: a count no memory holds is refused before allocating.
+  const double bytes = static_cast<double>(n) * (8.0 * (2 * c.dimension + 2 + 2) + 8 + 4);
+  const MemoryLimit limit = memory_limit();
+  if (bytes > limit.bytes)
+    throw std::runtime_error("particles = " + std::to_string(n) + " needs " + format_bytes(bytes) +
+                             ", more than the memory limit of " + format_bytes(limit.bytes) + " (" + limit.source + ")");
   c.time = read_double(file, "time");
   c.steps = read_int64(file, "steps");
   c.rhs_evals = read_int64(file, "rhs_evals");
@@ -369,6 +381,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   try {
     QuietHdf5 quiet;
     return read_file(path);
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemory("an allocation failed while reading checkpoint " + path);
   } catch (const std::exception& e) {
     throw InputError(path + ": cannot read checkpoint: " + e.what());
   }

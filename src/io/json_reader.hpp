@@ -18,6 +18,15 @@ struct JsonValue {
   std::vector<std::pair<std::string, JsonValue>> members;  // object, in file order
 
   const JsonValue* find(const std::string& key) const;  // object member, nullptr if absent
+
+  // Defined where JsonValue is complete (json_reader.cpp): clang with libstdc++ 12 rejects the
+  // implicit ones, which instantiate std::pair<std::string, JsonValue> inside this class.
+  JsonValue();
+  JsonValue(const JsonValue&);
+  JsonValue(JsonValue&&) noexcept;
+  JsonValue& operator=(const JsonValue&);
+  JsonValue& operator=(JsonValue&&) noexcept;
+  ~JsonValue();
 };
 
 JsonValue parse_json(const std::string& text, const std::string& source);

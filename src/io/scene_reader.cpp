@@ -19,6 +19,7 @@
 #include "core/scheme.hpp"
 #include "io/input_file.hpp"
 #include "io/scene_catalog.hpp"
+#include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
 
 namespace arksph {
@@ -323,6 +324,7 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
   check_schemes(sections, s);
   check_method(sections.at("method"), s);
   check_time_output(sections, s);
+  check_scene_limits(sections, s);
   s.resolved_toml = scene_to_toml(s);
   return s;
 }

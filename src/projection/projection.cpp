@@ -29,7 +29,7 @@ const std::vector<Param>& projection_params() {
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
           .to(&Scene::constraint_relaxation),
       choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})
-          .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; klu only)")
+          .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; scheme isph with klu only)")
           .to(&Scene::ppe_operator),
       choice("method.ppe_divergence", "cummins_rudman").choices({"cummins_rudman", "difference"})
           .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts")

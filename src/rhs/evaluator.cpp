@@ -222,6 +222,7 @@ void RhsEvaluator::sum_stages(Partition part) {
   for (std::size_t k = 0; k < terms_.size();) {
     const auto& term = terms_[k];
     if (term->stage() != done) {  // entering a later stage: ghosts take their sources' new values
+      if (between_phases_) between_phases_();
       ghosts_.copy(f.rho);
       ghosts_.copy(f.p);
       done = term->stage();
@@ -293,11 +294,14 @@ void RhsEvaluator::eval(double t, const double* y, double* ydot) {
   auto t0 = clock::now();
   const bool rebuild = neighbors_.stale(load_state(t, y));
   ghosts_.refresh(f, particles_.mass, rebuild, neighbors_.skin());
+  if (between_phases_) between_phases_();
   if (rebuild) neighbors_.rebuild(f);
+  if (between_phases_) between_phases_();
   // Pairs for the terms that walk them, and for whoever reads fields() after a field refresh (ydot
   // null: diagnostics, the projection); otherwise none are stored.
   neighbors_.provide_pairs(f, ydot ? pairs_for_terms_ : std::max(pairs_for_terms_, pairs_for_refresh_));
   timing_.neighbors += seconds_since(t0);
+  if (between_phases_) between_phases_();
 
   t0 = clock::now();
   if (options_.imex_split) {

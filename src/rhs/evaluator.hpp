@@ -2,6 +2,7 @@
 // ghosts (rhs/ghost_field.hpp) and the neighbours (rhs/neighbor_cache.hpp) at its positions, sums
 // the terms in stage order and returns [u ; du/dt ; drho/dt] in the state layout.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ class RhsEvaluator {
 
   const RhsOptions& options() const { return options_; }
   void set_options(const RhsOptions& options);
+  // Called between the phases of eval (ghosts, neighbour search, pairs, term stages); it may throw. The
+  // set-up polls for a signal this way while the first evaluations of a large run take seconds;
+  // empty (the default) during the time loop, where eval runs inside SUNDIALS callbacks.
+  void set_between_phases(std::function<void()> hook) { between_phases_ = std::move(hook); }
   const FluidFields& fields() const { return fields_; }
   const Kernel& kernel() const { return kernel_; }
   const ParticleSet& particles() const { return particles_; }
@@ -94,6 +99,7 @@ class RhsEvaluator {
   NeighborCache neighbors_;
   FluidFields fields_;
   RhsOptions options_;
+  std::function<void()> between_phases_;
   PairUse pairs_for_terms_ = PairUse::repeated;  // f.pairs at every f: for terms that walk them
   PairUse pairs_for_refresh_ = PairUse::once;    // and after a field refresh, for its readers
   bool periodic_[2] = {false, false};

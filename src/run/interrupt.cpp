@@ -4,6 +4,7 @@
 
 #include <csignal>
 #include <initializer_list>
+#include <string>
 
 namespace arksph {
 
@@ -20,27 +21,44 @@ extern "C" void on_signal(int sig) {
 }
 }  // namespace
 
+constexpr int kSignals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM};
+
 void install_interrupt_handlers() {
   struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART;  // interrupted system calls (file writes) resume
-  for (int sig : {SIGINT, SIGTERM}) {
+  sigset_t handled;
+  sigemptyset(&handled);
+  for (int sig : kSignals) {
     struct sigaction old {};
     sigaction(sig, nullptr, &old);
-    if (old.sa_handler == SIG_IGN) continue;  // e.g. SIGINT of a background job: stays ignored
+    if (old.sa_handler == SIG_IGN) continue;  // e.g. SIGINT of a background job, SIGHUP under nohup: stays ignored
     sigaction(sig, &sa, nullptr);
+    sigaddset(&handled, sig);
   }
+  pthread_sigmask(SIG_UNBLOCK, &handled, nullptr);
 }
 
 int pending_interrupt() { return g_signal; }
 
 const char* interrupt_name(int signal) {
   switch (signal) {
+    case SIGHUP: return "SIGHUP";
     case SIGINT: return "SIGINT";
+    case SIGQUIT: return "SIGQUIT";
     case SIGTERM: return "SIGTERM";
     default: return "signal";
   }
+}
+
+InterruptedDuringSetup::InterruptedDuringSetup(int sig)
+    : std::runtime_error(std::string("interrupted by ") + interrupt_name(sig) +
+                         " during set-up, before the first step: no checkpoint written (nothing to continue from)"),
+      signal(sig) {}
+
+void poll_setup_interrupt() {
+  if (const int sig = g_signal) throw InterruptedDuringSetup(sig);
 }
 
 }  // namespace arksph

@@ -6,16 +6,43 @@
 
 #include "boundary/wall_velocity_rules.hpp"
 #include "core/errors.hpp"
+#include "core/expression.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
+#include "run/interrupt.hpp"
+#include "run/memory_estimate.hpp"
 
 namespace arksph {
 
+namespace {
+// The body force at t = 0 at every particle: NaN or infinity there is bad input (the key and one
+// particle), not a numerical failure of the first step.
+void check_initial_body_force(const Scene& scene, const ParticleSet& p) {
+  for (int k = 0; k < scene.dimension; ++k) {
+    const Expression force(scene.body_force.at(k), {"x", "y", "t"});
+    for (std::size_t a = 0; a < p.n; ++a) {
+      const double x = p.init_pos[0][a], y = scene.dimension == 2 ? p.init_pos[1][a] : 0.0;
+      const double g = force.eval(x, y, 0.0);
+      if (!std::isfinite(g))
+        throw InputError(scene.source + ": fluid.body_force: component " + std::to_string(k) + " (\"" +
+                         scene.body_force[k] + "\") is " + message_number(g) + " at t = 0 at the particle at (" +
+                         message_number(x) + ", " + message_number(y) + ")");
+    }
+  }
+}
+}  // namespace
+
 Model build_model(const Scene& scene) {
   Model model;
-  model.particles = make_lattice(scene);
+  check_run_memory(scene);  // before anything large is allocated
+  const long long particles = std::llround(estimate_run_memory(scene).particles);
+  set_activity("building the lattice of " + std::to_string(particles) + " particles");
+  model.particles = make_lattice(scene, poll_setup_interrupt);
+  poll_setup_interrupt();
+  check_initial_body_force(scene, model.particles);
+  poll_setup_interrupt();
   if (scene.shuffle_initial_order) permute(model.particles, shuffled_order(model.particles.n, 0x5eed));
   model.h = scene.h_over_dx * scene.spacing;
   Kernel kernel = make_kernel(scene.kernel, model.h, scene.dimension);
@@ -55,8 +82,11 @@ Model build_model(const Scene& scene) {
   } else {
     model.terms.push_back("integrator:erkstep:" + scene.integrator);
   }
+  set_activity("setting up the right-hand side of " + std::to_string(model.particles.n) + " particles");
   model.rhs = std::make_unique<RhsEvaluator>(scene, model.particles, std::move(kernel), std::move(terms));
+  poll_setup_interrupt();
   if (scheme.projection) {
+    set_activity("setting up the projection of " + std::to_string(model.particles.n) + " particles");
     model.projection = std::make_unique<Projection>(scene, *model.rhs);
     if (scheme.grid) {
       const GridSpec g = gpps_grid(scene);

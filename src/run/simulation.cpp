@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "run/checkpointing.hpp"  // checkpoints and restart
 #include "run/interrupt.hpp"
@@ -35,6 +36,20 @@ double max_speed_of(const StateLayout& L, const double* y) {
     m2 = std::max(m2, s2);
   }
   return std::sqrt(m2);
+}
+
+// Adaptive mode: a step the controller chose (not one cut to land on an output or checkpoint time)
+// that t + dt can barely or no longer resolve means the run will never reach time.end.
+void check_step_size(double t, double dt, double end) {
+  const double floor = 1e-12 * std::max(std::abs(t), end);
+  if (dt < floor || t + dt == t) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "t = %.9g: the adaptive time step %.3g underflowed (below 1e-12 max(|t|, time.end) = %.3g): the run "
+                  "cannot reach time.end",
+                  t, dt, floor);
+    throw NumericalFailure(buf);
+  }
 }
 
 void print_run_header(const Scene& scene, const Model& model) {
@@ -76,6 +91,7 @@ std::string start_output_folder(const OutputFolder& folder, const Scene& scene, 
 RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   using clock = std::chrono::steady_clock;
   const auto wall_start = clock::now();
+  poll_setup_interrupt();  // set-up polls for a signal between its phases and in its long loops
   Model model = build_model(scene);
   // The output folder: locked for this run; a fresh run clears an earlier run's outputs, a restart
   // continues only its own run's (run/output_folder.hpp).
@@ -85,13 +101,19 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   RhsEvaluator& rhs = *model.rhs;
   const StateLayout& layout = rhs.layout();
   print_run_header(scene, model);
+  const std::string particles = std::to_string(layout.n) + " particles";
+  rhs.set_between_phases(poll_setup_interrupt);  // until the first step (see below)
 
+  set_activity("setting up the initial state of " + particles);
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
   std::vector<double> d0;
   ParticleReorder reorder(scene, model);
   if (scene.reorder_every > 0) reorder.sort(y0.data(), d0);  // t = 0 is a sync point (before the first f)
+  poll_setup_interrupt();
+  set_activity("building the neighbour lists and initial fields of " + particles);
   rhs.eval(0.0, y0.data(), nullptr);
+  poll_setup_interrupt();
   d0 = number_density(rhs.fields());  // at t = 0 in the t = 0 order, also on restart (bit-identical diagnostics)
   // Restart: the particles in the checkpoint's order (re-sorts, method.reorder_every); check the
   // checkpoint against the scene, and read the earlier output before RunOutput truncates it.
@@ -105,6 +127,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   if (checkpoints.restarting()) out.resume(earlier);
 
   ErkOptions eo = integrator_options(scene);
+  eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(layout, model.particles.id, i, v); };
   eo.stability = [&](double, const double* y) {
     return stable_step(scene, model, max_speed_of(layout, y), rhs.max_acceleration());
   };
@@ -118,7 +141,10 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     y0 = checkpoints.restart().state;
     eo.initial_dt = checkpoints.restart().next_step;
     rhs.invalidate_neighbors();
+    StateChecker(scene, model).check(checkpoints.start_time(), y0.data());  // NaN, blow-up, escape in the file
   }
+  poll_setup_interrupt();
+  set_activity("creating the time integrator for " + particles);
   const long diag_evals_before = rhs.evaluations();
   // A constrained projection starts from a divergence-free velocity (a restart already is).
   if (model.projection && !checkpoints.restarting()) model.projection->project_initial(0.0, y0.data());
@@ -133,6 +159,8 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   Progress progress(scene.end, options.quiet);
   long diag_evals = rhs.evaluations() - diag_evals_before + 1;
 
+  poll_setup_interrupt();
+  set_activity("writing the output at t = 0 of " + particles);
   double t = checkpoints.start_time();
   int frame = checkpoints.first_frame();
   RunResult result;
@@ -140,15 +168,20 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     // Output at t = 0, every `every`, and the end time exactly.
     if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
     std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
+    poll_setup_interrupt();
+    rhs.set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
+    set_activity("stepping " + particles);
     while (t < scene.end) {
       double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;  // 3 * 0.1 -> 0.3
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
       while (t < t_next) {
         if (model.projection) model.projection->begin_step(t, integrator.state());
-        t = integrator.step(checkpoints.limit(t_next));  // checkpoint times are stop times too
+        const double stop = checkpoints.limit(t_next);
+        t = integrator.step(stop);  // checkpoint times are stop times too
         const ErkStats st = integrator.stats();
         dt_max = std::max(dt_max, st.last_step);
+        if (scene.dt == 0 && t < stop) check_step_size(t, st.last_step, scene.end);
         if (const long r = reflection.apply(integrator.state())) {  // sync point: re-initialise
           reflections += r;
           integrator.reset(t);
@@ -186,6 +219,9 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
         result.message += std::string("; ") + again.what();
       }
     }
+  } catch (const std::bad_alloc&) {
+    result.exit_code = 6;
+    result.message = "out of memory at t = " + std::to_string(t) + ": an allocation failed while " + activity();
   } catch (const Interrupted& i) {  // checkpoint at the last completed step, then exit 128 + signal
     result.exit_code = 128 + i.signal;
     result.interrupted = true;

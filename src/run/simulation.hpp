@@ -17,9 +17,9 @@ struct RunOptions {
 };
 
 struct RunResult {
-  int exit_code = 0;  // 0 ok, 3 numerical failure, 5 output could not be written
+  int exit_code = 0;  // 0 ok, 3 numerical failure, 5 output could not be written, 6 out of memory, 128 + signal
   std::string message;
-  bool interrupted = false;  // SIGINT/SIGTERM: exit code 128 + signal, checkpoint written
+  bool interrupted = false;  // SIGHUP/SIGINT/SIGQUIT/SIGTERM: exit code 128 + signal, checkpoint written
   std::string checkpoint;    // the last checkpoint written ("" if none)
 };
 
@@ -27,6 +27,7 @@ struct RunResult {
 // the folder is locked by another run, holds foreign files, or another run's output on restart),
 // OutputError if the folder cannot be created. A write failure during the run gives exit code 5
 // with the checkpoint and summary.json written where space allows.
+// InterruptedDuringSetup for a signal before the first step (run/interrupt.hpp).
 RunResult run_simulation(const Scene& scene, const RunOptions& options);
 
 }  // namespace arksph

@@ -51,4 +51,22 @@ void StateChecker::check(double t, const double* y) const {
   }
 }
 
+std::string describe_rhs_entry(const StateLayout& L, const std::vector<std::int64_t>& ids, std::size_t i,
+                               double value) {
+  const std::size_t a = i % L.n, block = i / L.n;
+  const int k = static_cast<int>(block % static_cast<std::size_t>(L.dim));
+  std::string what;
+  if (block < static_cast<std::size_t>(L.dim))
+    what = std::string("velocity ") + "uv"[k] + " (dx/dt)";
+  else if (block < 2 * static_cast<std::size_t>(L.dim))
+    what = std::string("acceleration a") + "xy"[k];
+  else if (L.has_density && i >= L.rho() && i < L.rho() + L.n)
+    what = "density rate drho/dt";
+  else
+    what = "energy rate de/dt";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "particle id %lld: ", static_cast<long long>(a < ids.size() ? ids[a] : -1));
+  return buf + what + " = " + message_number(value) + " in the right-hand side";
+}
+
 }  // namespace arksph

@@ -100,7 +100,9 @@ std::string status_from_exit(int code, int signal) {
     case 0: return "missing_summary";
     case 2: return "bad_input";
     case 3: return "failed";
+    case 129:
     case 130:
+    case 131:
     case 143: return "interrupted";
     default: return "failed";
   }

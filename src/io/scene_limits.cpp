@@ -1,0 +1,118 @@
+#include "io/scene_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/expression.hpp"
+#include "kernels/kernel.hpp"
+
+namespace arksph {
+
+namespace {
+
+using scene_schema::format_number;
+using scene_schema::Section;
+
+// v is a normal double: neither zero, subnormal, infinite nor NaN.
+bool normal(double v) { return std::isnormal(v); }
+
+void check_scales(const std::map<std::string, Section>& sections, const Scene& s) {
+  const Section& fluid = sections.at("fluid");
+  const Section& domain = sections.at("domain");
+  const int d = s.dimension;
+  const double h = s.h_over_dx * s.spacing;
+  const double radius = make_kernel(s.kernel, h, d).radius();
+  const std::string scales = " (h = " + format_number(h) + ", kernel radius " + format_number(radius) + ")";
+  if (!normal(s.spacing * s.spacing) || !normal(h * h) || !normal(radius * radius))
+    fluid.fail("spacing", format_number(s.spacing) + " is outside the range of lengths whose squares are normal "
+                          "doubles" + scales);
+  // The kernel's value and gradient constants scale as 1 / h^d and 1 / h^(d+2).
+  const double hd2 = std::pow(h, d + 2);
+  if (!normal(hd2) || !normal(1.0 / hd2) || !normal(std::pow(h, d)) || !normal(1.0 / std::pow(h, d)))
+    fluid.fail("spacing", format_number(s.spacing) + " makes the kernel constants 1/h^" + std::to_string(d) +
+                              " and 1/h^" + std::to_string(d + 2) + " overflow or underflow a double" + scales);
+  // Separations reach the box length plus the ghost layers; coordinates must resolve the spacing to
+  // a millionth of it (else neighbouring particles collapse onto the same double).
+  for (int k = 0; k < d; ++k) {
+    const double reach = (s.max[k] - s.min[k]) + 2 * radius;
+    const double coordinate = std::max(std::abs(s.min[k]), std::abs(s.max[k])) + radius;
+    if (!std::isfinite(reach * reach) || !std::isfinite(coordinate * coordinate))
+      domain.fail(std::abs(s.max[k]) >= std::abs(s.min[k]) ? "max" : "min",
+                  "the box with its ghost layers (" + format_number(reach) +
+                      " across) is too large: its squared size overflows a double");
+    const double resolution = std::nextafter(coordinate, INFINITY) - coordinate;
+    if (!(s.spacing >= 1e6 * resolution))
+      fluid.fail("spacing", format_number(s.spacing) + " is less than 10^6 times the spacing of doubles (" +
+                                format_number(resolution) + ") at the coordinates near " + format_number(coordinate) +
+                                " (domain.min/max): positions would be rounded by more than a millionth of it");
+  }
+}
+
+void check_progress(const std::map<std::string, Section>& sections, const Scene& s) {
+  const Section& time = sections.at("time");
+  const Section& output = sections.at("output");
+  const double spacing_at_end = std::nextafter(s.end, INFINITY) - s.end;
+  if (s.dt > 0 && !(s.dt >= spacing_at_end))
+    time.fail("dt", format_number(s.dt) + " is below the spacing of doubles at time.end = " + format_number(s.end) +
+                        " (" + format_number(spacing_at_end) + "): t + dt == t, the run could not advance");
+  const struct {
+    const char* key;
+    double every;
+    const char* what;
+  } writes[] = {{"every", s.every, "frames"}, {"checkpoint_every", s.checkpoint_every, "checkpoints"}};
+  for (const auto& w : writes) {
+    if (w.every <= 0) continue;
+    const double count = std::floor(s.end / w.every);
+    if (!(count <= kMaxScheduledWrites))
+      output.fail(w.key, format_number(w.every) + " schedules " + format_number(count) + " " + w.what +
+                             " up to time.end = " + format_number(s.end) + ", more than the limit of " +
+                             format_number(kMaxScheduledWrites));
+  }
+}
+
+bool all_walls(const Scene& s) {
+  for (int i = 0; i < 2 * s.dimension; ++i)
+    if (s.sides[i].kind != SideKind::wall) return false;
+  return true;
+}
+
+void check_scene_options(const std::map<std::string, Section>& sections, const Scene& s) {
+  const Section& metrics = sections.at("metrics");
+  const auto& sd = s.sides;  // left, right, bottom, top
+  if (s.ghia_re != 0 && !(s.dimension == 2 && all_walls(s) && sd[3].velocity[0] != 0))
+    metrics.fail("ghia_re", "the Ghia et al. centreline errors need a 2D lid-driven cavity: walls on all four "
+                            "sides and boundary.top moving along x (scene.dimension = " +
+                                std::to_string(s.dimension) + ")");
+  if (s.poiseuille) {
+    const bool channel = s.dimension == 2 && sd[0].kind == SideKind::periodic && sd[2].kind == SideKind::wall &&
+                         sd[3].kind == SideKind::wall && sd[2].velocity == std::array<double, 2>{0, 0} &&
+                         sd[3].velocity == std::array<double, 2>{0, 0};
+    if (!channel)
+      metrics.fail("poiseuille", "the Poiseuille error needs a 2D channel: boundary.left/right periodic, "
+                                 "boundary.bottom/top resting walls");
+    const double f = Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0);
+    if (!(std::isfinite(f) && f != 0))
+      metrics.fail("poiseuille", "the Poiseuille error needs a driving body force along x (fluid.body_force[0] = \"" +
+                                     s.body_force.at(0) + "\")");
+  }
+  if (s.wall_particles && (s.dimension != 2 || !std::any_of(sd.begin(), sd.begin() + 2 * s.dimension,
+                                                            [](const SideSpec& x) { return x.kind == SideKind::wall; })))
+    sections.at("boundary").fail("wall_particles", "needs a 2D scene with at least one wall (scene.dimension = " +
+                                                       std::to_string(s.dimension) + ")");
+  if (s.ppe_operator != "approximate" && s.scheme != "isph")
+    sections.at("method").fail("ppe_operator", "\"" + s.ppe_operator + "\" needs method.scheme = \"isph\" (got \"" +
+                                                   s.scheme + "\": " +
+                                                   (s.scheme == "isph-gpps" ? "its pressure is solved on the grid" :
+                                                                              "it has no pressure Poisson equation") +
+                                                   ")");
+}
+
+}  // namespace
+
+void check_scene_limits(const std::map<std::string, Section>& sections, const Scene& s) {
+  check_scales(sections, s);
+  check_progress(sections, s);
+  check_scene_options(sections, s);
+}
+
+}  // namespace arksph

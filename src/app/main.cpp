@@ -47,7 +47,7 @@ const char* kUsage =
     "summary.json, checkpoint.h5 (every output.checkpoint_every and at the end).\n"
     "Exit codes (README.md): 0 finished, 1 internal error (a bug), 2 bad input, 3 numerical failure\n"
     "(output so far stays valid), 4 order study flagged, 5 output could not be written, 6 out of memory,\n"
-    "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; checkpoint.h5 written, continue with --restart).\n";
+    "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 131 SIGQUIT; checkpoint.h5 written, continue with --restart).\n";
 
 std::string toml_quote(const std::string& s) {
   std::string q = "\"";

@@ -93,9 +93,7 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
     if (v) wy_[a] = ydot[L.vel(1) + a] + (av ? av[a] : 0.0) + relaxation_ * v[a];
   }
   div_.resize(n);
-  difference_divergence(f, wx_.data(), wy_.data(), div_.data());
-  const std::vector<double> q = divergence_rate_of_motion(f, u, v);
-  for (std::size_t a = 0; a < n; ++a) div_[a] -= q[a];
+  divergence_minus_motion(f, wx_.data(), wy_.data(), u, v, div_.data());
   const ConstraintReport rep = solve_pressure(div_);
   pressure_gradient(p_);
   for (std::size_t a = 0; a < n; ++a) {

@@ -116,6 +116,29 @@ std::vector<double> divergence_rate_of_motion(const FluidFields& f, const double
   return q;
 }
 
+void divergence_minus_motion(const FluidFields& f, const double* wx, const double* wy, const double* u, const double* v,
+                             double* out) {
+  const Kernel& kernel = *f.kernel;
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    const double wxa = wx[a], wya = f.dim == 2 ? wy[a] : 0.0;
+    const double ua = u[a], va = f.dim == 2 ? v[a] : 0.0;
+    double s = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double, double F) {
+      if (!(r2 > 0)) return;
+      const std::uint32_t src = f.src[b];
+      const double fx = flip(f.flip_x, b), fy = flip(f.flip_y, b);
+      const double wxb = fx * wx[src], wyb = f.dim == 2 ? fy * wy[src] : 0.0;
+      const double dux = ua - fx * u[src], duy = f.dim == 2 ? va - fy * v[src] : 0.0;
+      const double r = std::sqrt(r2);
+      const double along = (dux * rx + duy * ry) / r;
+      const double quad = kernel.d2Wdr2(r) * along * along + F * (dux * dux + duy * duy - along * along);
+      s += f.m[b] / f.rho[b] * (F * ((wxb - wxa) * rx + (wyb - wya) * ry) - quad);
+    });
+    out[a] = s;
+  }
+}
+
 void difference_divergence(const FluidFields& f, const double* wx, const double* wy, double* out) {
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < f.n_real; ++a) {

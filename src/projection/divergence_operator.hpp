@@ -60,6 +60,11 @@ class DivergenceOperator {
 // div(du/dt) - tr(grad u grad u)).
 std::vector<double> divergence_rate_of_motion(const FluidFields& f, const double* u, const double* v);
 
+// out = D w - Q in one pass over the pairs (the source of the constrained projection's pressure
+// equation), w the acceleration field, (u, v) the velocities that Q reads.
+void divergence_minus_motion(const FluidFields& f, const double* wx, const double* wy, const double* u, const double* v,
+                             double* out);
+
 // out = D w, pair by pair (no matrix): the divergence of the constrained projection's source and of
 // the run's incompressibility measure.
 void difference_divergence(const FluidFields& f, const double* wx, const double* wy, double* out);

@@ -30,17 +30,7 @@ using arksph::testing::slurp;
 
 namespace {
 
-// 10 x 10 particles in a resting box, 0.01 s; particle ids are the lattice order, row by row from
-// (0.05, 0.05), so the particle at (0.95, 0.95) has id 99.
-const char* kScene = R"(
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-[time]
-end = 0.01
-)";
+const char* const kScene = arksph::testing::kMinimalScene;  // tests/process/cli_outcome.hpp
 
 // Exit 3, one line, "t = ..., particle id <id>: <quantity>" (any id if `id` is empty).
 void check_diagnosed(const CliOutcome& o, const std::string& id, const std::string& quantity) {

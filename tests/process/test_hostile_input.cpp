@@ -20,16 +20,7 @@ using arksph::testing::ScratchDir;
 
 namespace {
 
-// The minimal scene: 10 x 10 particles, a resting cavity without a lid, 0.01 s.
-const char* kScene = R"(
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-[time]
-end = 0.01
-)";
+const char* const kScene = arksph::testing::kMinimalScene;  // tests/process/cli_outcome.hpp
 
 const char* kScene1d = R"(
 [scene]

@@ -38,16 +38,19 @@ double max_speed_of(const StateLayout& L, const double* y) {
   return std::sqrt(m2);
 }
 
-// Adaptive mode: a step the controller chose (not one cut to land on an output or checkpoint time)
-// that t + dt can barely or no longer resolve means the run will never reach time.end.
-void check_step_size(double t, double dt, double end) {
+// Adaptive mode: steps that t + dt can barely or no longer resolve, several in a row, mean the run
+// will never reach time.end. One such step alone is not enough: ARKODE may end the approach to a
+// stop time (an output or checkpoint time) with a sliver of a step. `tiny`: the count so far.
+constexpr int kTinyStepsInARow = 10;
+void check_step_size(double t, double dt, double end, int& tiny) {
   const double floor = 1e-12 * std::max(std::abs(t), end);
-  if (dt < floor || t + dt == t) {
+  tiny = (dt < floor || t + dt == t) ? tiny + 1 : 0;
+  if (tiny >= kTinyStepsInARow) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "t = %.9g: the adaptive time step %.3g underflowed (below 1e-12 max(|t|, time.end) = %.3g): the run "
-                  "cannot reach time.end",
-                  t, dt, floor);
+                  "t = %.9g: the adaptive time step %.3g underflowed (below 1e-12 max(|t|, time.end) = %.3g, %d steps "
+                  "in a row): the run cannot reach time.end",
+                  t, dt, floor, kTinyStepsInARow);
     throw NumericalFailure(buf);
   }
 }
@@ -163,6 +166,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   set_activity("writing the output at t = 0 of " + particles);
   double t = checkpoints.start_time();
   int frame = checkpoints.first_frame();
+  int tiny_steps = 0;  // adaptive steps in a row below the underflow floor (check_step_size)
   RunResult result;
   try {
     // Output at t = 0, every `every`, and the end time exactly.
@@ -181,10 +185,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
         t = integrator.step(stop);  // checkpoint times are stop times too
         const ErkStats st = integrator.stats();
         dt_max = std::max(dt_max, st.last_step);
-        // An underflowing adaptive step, away from a stop time: ARKODE may end the approach to a
-        // stop time (output, checkpoint) with a sliver of a step, which is not an underflow.
-        if (scene.dt == 0 && stop - t > 1e-9 * std::max(std::abs(t), scene.end))
-          check_step_size(t, st.last_step, scene.end);
+        if (scene.dt == 0) check_step_size(t, st.last_step, scene.end, tiny_steps);
         if (const long r = reflection.apply(integrator.state())) {  // sync point: re-initialise
           reflections += r;
           integrator.reset(t);

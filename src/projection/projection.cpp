@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <numeric>
 
 #include "core/errors.hpp"
 #include "core/param_builder.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
-#include "projection/divergence_operator.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
@@ -89,12 +87,6 @@ void Projection::project_initial(double t, double* y) {
   if (!constrained_) return;
   const ConstraintReport rep = constrained_->project_velocity(t, y);
   stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
-}
-
-double Projection::divergence_rms(double t, const double* y) {
-  rhs_.eval(t, y, nullptr);
-  const StateLayout& L = rhs_.layout();
-  return arksph::divergence_rms(rhs_.fields(), y + L.vel(0), L.dim == 2 ? y + L.vel(1) : nullptr);
 }
 
 void Projection::forget_warm_start() {

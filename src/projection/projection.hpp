@@ -50,9 +50,6 @@ class Projection {
   void constrain(const double* y, double* ydot, const double* au, const double* av);
   // The start of a constrained run: u <- P u, so that D u = 0 at t = 0.
   void project_initial(double t, double* y);
-  // r.m.s. of the divergence D u of the constrained projection (projection/divergence_operator.hpp)
-  // at the state y (fields refreshed here): the measure of incompressibility for every projection.
-  double divergence_rms(double t, const double* y);
   // Remembers the state at the start of the next step (for the centring of eq. 12).
   void begin_step(double t, const double* y);
   // Projects y (the end-of-step state at time t) in place.

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_outcome.hpp"
 #include "core/errors.hpp"
 #include "integrate/callback_guard.hpp"
 #include "integrate/erk_integrator.hpp"
@@ -63,27 +64,9 @@ ImexFunctions decay_functions(DecaySplit& split) {
   return f;
 }
 
-struct Outcome {
-  int code = -1;
-  std::string err;
-};
-
-// Runs the arksph binary; captures stderr (stdout discarded).
-Outcome run_arksph(const std::string& args) {
-  static int calls = 0;
-  const fs::path err_file = fs::temp_directory_path() / ("arksph_callback_stderr_" + std::to_string(getpid()) + "_" +
-                                                         std::to_string(calls++) + ".txt");
-  const std::string cmd = std::string(ARKSPH_BINARY) + " " + args + " >/dev/null 2>" + err_file.string();
-  const int status = std::system(cmd.c_str());
-  Outcome o;
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err_file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  o.err = ss.str();
-  fs::remove(err_file);
-  return o;
-}
+// The arksph binary with arguments, stderr captured (tests/process/cli_outcome.hpp).
+using Outcome = arksph::testing::CliOutcome;
+Outcome run_arksph(const std::string& args) { return arksph::testing::run_cli(args); }
 }  // namespace
 
 TEST_CASE("callback guard: the first exception is kept, the flag is negative, rethrow clears it") {

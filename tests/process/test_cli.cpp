@@ -12,30 +12,14 @@
 #include <sstream>
 #include <string>
 
+#include "cli_outcome.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
-struct Outcome {
-  int code = -1;
-  std::string err;
-};
-
-// Runs the arksph binary with arguments; captures stderr; stdout is discarded.
-Outcome run_arksph(const std::string& args) {
-  // Unique per process and call: ctest runs test cases in parallel processes.
-  static int calls = 0;
-  const std::string err_file = fs::temp_directory_path() / ("arksph_cli_stderr_" + std::to_string(getpid()) + "_" +
-                                                            std::to_string(calls++) + ".txt");
-  const std::string cmd = std::string(ARKSPH_BINARY) + " " + args + " >/dev/null 2>" + err_file;
-  const int status = std::system(cmd.c_str());
-  Outcome o;
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err_file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  o.err = ss.str();
-  return o;
-}
+// The arksph binary with arguments, stderr captured (tests/process/cli_outcome.hpp).
+using Outcome = arksph::testing::CliOutcome;
+Outcome run_arksph(const std::string& args) { return arksph::testing::run_cli(args); }
 
 int count_lines(const std::string& s) {
   int n = 0;

@@ -70,6 +70,8 @@ struct Scene {
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";
+  std::string regularisation = "none";     // particle regularisation in dr/dt (rhs/term_registry.hpp)
+  std::string density_diffusion = "none";  // delta-SPH in the continuity equation (wcsph)
   std::string projection = "cummins_rudman";  // isph: "cummins_rudman" (after each step) | "constrained" (pressure in f)
   double constraint_relaxation = 1.0;  // constrained projection: alpha = this x U/h, the decay rate of D u
   std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
@@ -109,6 +111,7 @@ struct Scene {
   int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors
   bool poiseuille = false;  // Basa et al. 2008 eqs. 36-39
   bool interface = false;   // two phases: 0.5 contour of the smoothed phase indicator, tip heights
+  std::vector<std::string> exact_velocity;  // u(x, y, t) per dimension; all "0": off
 
   // Parameters that parts declare without a member here (core/param_builder.hpp), by dotted key.
   ParamTable part_params;

@@ -106,7 +106,11 @@ std::vector<Group> general_keys() {
         choice("method.pressure_gradient", "colagrossi").family("pressure_gradient")
             .doc("symmetric form of the pressure gradient (wcsph)").to(&Scene::pressure_gradient),
         choice("method.density_correction", "none").family("density_correction")
-            .doc("position correction after the projection (projection schemes)").to(&Scene::density_correction)},
+            .doc("position correction after the projection (projection schemes)").to(&Scene::density_correction),
+        choice("method.regularisation", "none").family("regularisation")
+            .doc("particle regularisation: a velocity added to dr/dt inside f(t, y)").to(&Scene::regularisation),
+        choice("method.density_diffusion", "none").family("density_diffusion")
+            .doc("diffusive term in the continuity equation (wcsph)").to(&Scene::density_diffusion)},
        ""},
       {projection_params(), "isph"},
       {{choice("method.neighbor_storage", "pairs").choices({"pairs", "candidates"})
@@ -139,7 +143,11 @@ std::vector<Group> general_keys() {
             .to(&Scene::poiseuille),
         flag("metrics.interface", false)
             .doc("two phases: interface_NNNNNN.csv (0.5 contour of the smoothed phase), bubble and spike tips")
-            .to(&Scene::interface)},
+            .to(&Scene::interface),
+        expressions("metrics.exact_velocity", {"x", "y", "t"}).unit("m/s")
+            .doc("exact velocity u(x, y, t), one expression per dimension (all 0: off): relative L1 velocity "
+                 "error and peak-speed error in timeseries.csv and summary.json")
+            .to(&Scene::exact_velocity)},
        ""},
   };
 }
@@ -170,7 +178,8 @@ const std::vector<FamilyInfo>& scene_families() {
       describe(equations_of_state()),    describe(density_corrections()),
       describe(correction_solvers()),    describe(poisson_solvers()),
       describe(wall_velocity_rules()),   describe(erk_tables()),
-      describe(imex_pairs()),
+      describe(imex_pairs()),            describe(regularisations()),
+      describe(density_diffusions()),
   };
   return families;
 }

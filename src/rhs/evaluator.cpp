@@ -44,7 +44,10 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   layout_.has_energy = wcsph && equations_of_state().at(scene.equation_of_state).traits.adds_state("energy");
   std::stable_sort(terms_.begin(), terms_.end(),
                    [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
-  for (const auto& t : terms_) implicit_.push_back(t->can_be_implicit());
+  for (const auto& t : terms_) {
+    implicit_.push_back(t->can_be_implicit());
+    moves_particles_ = moves_particles_ || t->moves_particles();
+  }
   // The projection walks the pairs of its field refresh (at r*) several times (divergence,
   // assembly, gradient): stored, not lean. Its force terms' f(t, y) is at other positions, so they
   // run in the sweep like WCSPH's.
@@ -152,6 +155,10 @@ double RhsEvaluator::load_state(double t, const double* y) {
     moved2 = std::max(moved2, dx * dx + dy * dy);
   }
   std::fill(f.dedt.begin(), f.dedt.end(), 0.0);
+  if (moves_particles_) {
+    f.shift_u.assign(n, 0.0);
+    f.shift_v.assign(two_d ? n : 0, 0.0);
+  }
   return have_ref ? moved2 : std::numeric_limits<double>::infinity();
 }
 
@@ -268,16 +275,19 @@ double RhsEvaluator::store_derivatives(const double* y, double* ydot) const {
   double* out_u = ydot ? ydot + layout_.vel(0) : nullptr;
   double* out_v = ydot && two_d ? ydot + layout_.vel(1) : nullptr;
   double* out_rho = ydot && layout_.has_density ? ydot + layout_.rho() : nullptr;
+  // The regularisation velocity, if any: dr/dt = u + du_s.
+  const double* su = f.shift_u.empty() ? nullptr : f.shift_u.data();
+  const double* sv = f.shift_v.empty() ? nullptr : f.shift_v.data();
   double amax2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax2) if (n > kLoadParallelMin)
   for (std::size_t a = 0; a < n; ++a) {
     const double ax = dudt[a], ay = two_d ? dvdt[a] : 0.0;
     amax2 = std::max(amax2, ax * ax + ay * ay);
     if (!ydot) continue;
-    out_x[a] = yu[a];
+    out_x[a] = su ? yu[a] + su[a] : yu[a];
     out_u[a] = ax;
     if (two_d) {
-      out_y[a] = yv[a];
+      out_y[a] = sv ? yv[a] + sv[a] : yv[a];
       out_v[a] = ay;
     }
     if (out_rho) out_rho[a] = drhodt[a];

@@ -102,6 +102,7 @@ class RhsEvaluator {
   std::function<void()> between_phases_;
   PairUse pairs_for_terms_ = PairUse::repeated;  // f.pairs at every f: for terms that walk them
   PairUse pairs_for_refresh_ = PairUse::once;    // and after a field refresh, for its readers
+  bool moves_particles_ = false;  // some term sets a regularisation velocity (FluidFields::shift_u)
   bool periodic_[2] = {false, false};
   double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;

@@ -48,6 +48,12 @@ struct FluidFields {
   // Specific internal energy (ideal-gas equation of state, Basa eqs. 12, 14); empty otherwise.
   std::vector<double> e, dedt;
 
+  // Regularisation velocity du_s of the particle regularisation parts: the particles move with
+  // dr/dt = u + du_s (rhs/Shifting_Lind2012.cpp, rhs/TransportVelocity_Adami2013.cpp). Sized to the
+  // real particles and zeroed at every f when such a part is on (a part may extend it to the
+  // ghosts); empty otherwise.
+  std::vector<double> shift_u, shift_v;
+
   // Real particles only.
   std::vector<double> rho0;               // reference density of the phase
   std::vector<double> dudt, dvdt, drhodt; // outputs

@@ -20,6 +20,8 @@ class Term {
   virtual std::string name() const = 0;  // "kind:model", listed in summary.json "terms"
   virtual Stage stage() const = 0;
   virtual void apply(FluidFields& f) const = 0;
+  // Whether the term adds a regularisation velocity to f.shift_u, f.shift_v (dr/dt = u + du_s).
+  virtual bool moves_particles() const { return false; }
   // Whether apply() walks f.pairs (an equation of state or a body force does not).
   virtual bool uses_neighbors() const { return true; }
   // Terms that only read neighbours and add to real particle a's derivatives (rhs/particle_term.hpp)

@@ -18,6 +18,11 @@ Part<TermFactory> equation_of_state_tait();
 Part<TermFactory> equation_of_state_ideal_gas();
 Part<TermFactory> density_continuity();
 Part<TermFactory> density_summation();
+Part<TermFactory> regularisation_none();
+Part<TermFactory> regularisation_shifting();
+Part<TermFactory> regularisation_transport_velocity();
+Part<TermFactory> density_diffusion_none();
+Part<TermFactory> density_diffusion_delta_sph();
 
 const Registry<TermFactory>& viscosity_models() {
   static const Registry<TermFactory> r("viscosity_model", "method.viscosity_model", {
@@ -63,5 +68,24 @@ const Registry<TermFactory>& density_modes() {
   });
   return r;
 }
+
+const Registry<TermFactory>& regularisations() {
+  static const Registry<TermFactory> r("regularisation", "method.regularisation", {
+      regularisation_none(),
+      regularisation_shifting(),
+      regularisation_transport_velocity(),
+  });
+  return r;
+}
+
+const Registry<TermFactory>& density_diffusions() {
+  static const Registry<TermFactory> r("density_diffusion", "method.density_diffusion", {
+      density_diffusion_none(),
+      density_diffusion_delta_sph(),
+  });
+  return r;
+}
+
+Part<TermFactory> regularisation_none() { return {"none", "particles move with the fluid velocity, dr/dt = u"}; }
 
 }  // namespace arksph

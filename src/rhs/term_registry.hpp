@@ -19,5 +19,8 @@ const Registry<TermFactory>& kernel_corrections();  // method.kernel_correction 
 // Selected by name, built by terms_from_scene with the resolved sound speed: no factories.
 const Registry<TermFactory>& equations_of_state();  // method.equation_of_state
 const Registry<TermFactory>& density_modes();       // method.density_mode
+const Registry<TermFactory>& regularisations();     // method.regularisation ("none": no factory)
+// Built by terms_from_scene with the resolved sound speed (make_density_diffusion).
+const Registry<TermFactory>& density_diffusions();  // method.density_diffusion
 
 }  // namespace arksph

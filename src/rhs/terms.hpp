@@ -17,6 +17,8 @@ std::unique_ptr<Term> make_pressure_reduction();   // Basa et al. 2008 eq. 20
 std::unique_ptr<Term> make_eos_ideal_gas(double gamma);  // Basa et al. 2008 eq. 12
 std::unique_ptr<Term> make_energy_equation();      // Basa et al. 2008 eq. 14
 std::unique_ptr<Term> make_body_force(const std::vector<std::string>& expr);
+// delta-SPH (method.density_diffusion = "delta_sph") with the resolved sound speed.
+std::unique_ptr<Term> make_density_diffusion(const Scene& scene, double sound_speed);
 
 // The terms a scene needs, and nothing else: no body force when it is zero, no viscosity when
 // nu = 0, no equation of state or pressure gradient unless the scheme is wcsph, etc.

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <utility>
 
+#include "core/errors.hpp"
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
+#include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
@@ -29,17 +31,7 @@ bool is_zero_force(const std::vector<std::string>& expr) {
 
 double resolve_sound_speed(const Scene& scene, double max_initial_speed) {
   if (scene.sound_speed > 0) return scene.sound_speed;
-  double u_ref = max_initial_speed;
-  for (int s = 0; s < 2 * scene.dimension; ++s)
-    u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
-  double length = 0, force = 0;
-  for (int k = 0; k < scene.dimension; ++k) {
-    length = std::max(length, scene.max[k] - scene.min[k]);
-    Expression e(scene.body_force.at(k), {"x", "y", "t"});
-    force = std::max(force, std::abs(e.eval(0.5 * (scene.min[0] + scene.max[0]),
-                                            0.5 * (scene.min[1] + scene.max[1]), 0.0)));
-  }
-  u_ref = std::max(u_ref, std::sqrt(force * length));
+  const double u_ref = reference_speed(scene, max_initial_speed);
   return u_ref > 0 ? 10.0 * u_ref : 1.0;
 }
 
@@ -59,7 +51,15 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
     if (scene.pressure_reduction) terms.push_back(make_pressure_reduction());  // Basa eq. 20
     terms.push_back(build(pressure_gradients().at(scene.pressure_gradient), scene));
     if (scene.density_mode == "continuity") terms.push_back(make_continuity());
+    if (scene.density_diffusion == "delta_sph") {
+      if (scene.density_mode != "continuity")
+        throw InputError("method.density_diffusion: \"delta_sph\" needs method.density_mode = \"continuity\" (got \"" +
+                         scene.density_mode + "\")");
+      terms.push_back(make_density_diffusion(scene, sound_speed));
+    }
   }
+  // Particle regularisation: a velocity in dr/dt and the corrections of the carried fields.
+  if (const auto& part = regularisations().at(scene.regularisation); part.make) terms.push_back(build(part, scene));
   if (scene.viscosity > 0) terms.push_back(build(viscosity_models().at(scene.viscosity_model), scene));
   if (!is_zero_force(scene.body_force)) terms.push_back(make_body_force(scene.body_force));
   return terms;

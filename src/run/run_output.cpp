@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "diagnostics/exact_velocity.hpp"
 #include "diagnostics/ghia.hpp"
 #include "diagnostics/nearest_neighbor.hpp"
 #include "diagnostics/phase_interface.hpp"
@@ -41,6 +42,7 @@ std::vector<std::string> RunOutput::csv_columns() const {
   if (scene_.ghia_re) c.insert(c.end(), {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms"});
   if (scene_.poiseuille) c.insert(c.end(), {"tstar", "poiseuille_eps"});
   if (scene_.interface) c.insert(c.end(), {"bubble_y", "spike_y", "upper_density_mean", "upper_density_rms"});
+  if (ExactVelocity(scene_.exact_velocity).enabled()) c.insert(c.end(), {"velocity_l1_relative", "peak_speed_error"});
   return c;
 }
 
@@ -97,6 +99,11 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     char name[64];
     std::snprintf(name, sizeof name, "/interface_%06d.csv", frames_);
     write_csv(scene_.directory + name, {"x0", "y0", "x1", "y1"}, seg);
+  }
+  if (const ExactVelocity exact(scene_.exact_velocity); exact.enabled()) {
+    const ExactVelocityErrors e = exact.errors(f);
+    row.insert(row.end(), {e.l1_relative, e.peak_speed_error});
+    case_metrics_.set("velocity_l1_relative", e.l1_relative).set("peak_speed_error", e.peak_speed_error);
   }
   if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
     const double* p = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
@@ -202,7 +209,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   metrics.set("divergence_rms", last_divergence_);
   for (const char* key : {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms", "poiseuille_rms",
                           "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2", "bubble_y", "spike_y",
-                          "upper_density_mean", "upper_density_rms"})
+                          "upper_density_mean", "upper_density_rms", "velocity_l1_relative", "peak_speed_error"})
     if (const Json* v = case_metrics_.find(key)) metrics.set(key, *v);
   j.set("metrics", metrics);
   Json params = Json::object();

@@ -1,0 +1,32 @@
+// Velocity errors against an exact velocity field u(x, y, t) given in the scene (metrics.exact_velocity),
+// for flows with a known solution such as the periodic Taylor-Green vortex.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/expression.hpp"
+#include "rhs/fluid_fields.hpp"
+
+namespace arksph {
+
+struct ExactVelocityErrors {
+  // Relative L1 error sum_a |u_a - u_exact(r_a, t)| / sum_a |u_exact(r_a, t)| (vector magnitudes).
+  double l1_relative = 0;
+  // Error of the peak speed: max_a |u_a| / max_a |u_exact(r_a, t)| - 1 (negative: too much decay).
+  double peak_speed_error = 0;
+};
+
+class ExactVelocity {
+ public:
+  // One expression of x, y, t per dimension. All "0" means no exact field (enabled() is false).
+  explicit ExactVelocity(const std::vector<std::string>& components);
+  bool enabled() const { return enabled_; }
+  // Over the real particles of fresh fields.
+  ExactVelocityErrors errors(const FluidFields& f) const;
+
+ private:
+  std::vector<Expression> components_;
+  bool enabled_ = false;
+};
+
+}  // namespace arksph

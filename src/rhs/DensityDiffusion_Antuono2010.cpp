@@ -1,0 +1,65 @@
+// delta-SPH density diffusion for the continuity equation of WCSPH (Antuono et al. 2010 eq. 4, with
+// the diffusive term of Molteni & Colagrossi 2009):
+//   drho_a/dt += delta h c sum_b psi_ab . grad_a W_ab V_b,   psi_ab = 2 (rho_b - rho_a) (r_b - r_a) / |r_ab|^2,
+// so that, with grad_a W_ab = F r_ab, psi_ab . grad_a W_ab = -2 F (rho_b - rho_a). Under a body force
+// g the hydrostatic part of the density difference is left out (Fourtakas et al. 2019, linearised
+// equation of state): rho_b - rho_a becomes rho_b - rho_a - rho0_a (g . r_ab) / c^2, so that a
+// fluid at rest in hydrostatic balance has no diffusive flux.
+#include "core/expression.hpp"
+#include "core/param_builder.hpp"
+#include "rhs/particle_term.hpp"
+#include "rhs/term_registry.hpp"
+#include "rhs/terms.hpp"
+
+namespace arksph {
+namespace {
+
+class DensityDiffusion final : public ParticleTerm<DensityDiffusion> {
+ public:
+  DensityDiffusion(double delta, double h, double c, double gx, double gy)
+      : coeff_(2.0 * delta * h * c), hx_(gx / (c * c)), hy_(gy / (c * c)) {}
+  std::string name() const override { return "density_diffusion:delta_sph"; }
+  bool reads_kernel_value() const override { return false; }
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    const double rho_a = f.rho[a], rho0 = f.rho0[a];
+    const double hx = rho0 * hx_, hy = f.dim == 2 ? rho0 * hy_ : 0.0;
+    double sum = 0;
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const double dynamic = f.rho[b] - rho_a - (hx * rx + hy * ry);
+      sum -= F * f.vol[b] * dynamic;
+    });
+    f.drhodt[a] += coeff_ * sum;
+  }
+
+ private:
+  double coeff_;   // 2 delta h c
+  double hx_, hy_; // g / c^2 (times rho0 per particle)
+};
+
+}  // namespace
+
+std::unique_ptr<Term> make_density_diffusion(const Scene& s, double sound_speed) {
+  const double h = s.h_over_dx * s.spacing;
+  double g[2] = {0, 0};
+  for (int k = 0; k < s.dimension; ++k) {  // a constant body force only: otherwise no hydrostatic part
+    Expression e(s.body_force.at(k), {"x", "y", "t"});
+    if (e.is_constant()) g[k] = e.eval(0, 0, 0);
+  }
+  return std::make_unique<DensityDiffusion>(part_param<double>(s, "method.delta_sph_coefficient"), h, sound_speed,
+                                            g[0], g[1]);
+}
+
+Part<TermFactory> density_diffusion_none() { return {"none", "no density diffusion"}; }
+
+Part<TermFactory> density_diffusion_delta_sph() {
+  return {"delta_sph",
+          "delta-SPH diffusion in the continuity equation (Antuono et al. 2010 eq. 4, Molteni & Colagrossi 2009), "
+          "hydrostatic part left out",
+          nullptr,
+          {number("method.delta_sph_coefficient", 0.1).in(at_least(0))
+               .doc("delta of the delta-SPH diffusive term (Antuono et al. 2010: 0.1)")},
+          {.schemes = {"wcsph"}}};
+}
+
+}  // namespace arksph

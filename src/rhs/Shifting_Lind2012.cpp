@@ -1,0 +1,95 @@
+// Fickian particle shifting (Xu, Stansby & Laurence 2009; Lind et al. 2012 eqs. 8-10), written as a
+// velocity of the ODE instead of a displacement after each step:
+//   dr_a/dt = u_a + du_a,   du_a = -A h U grad C_a,
+//   grad C_a = sum_b V_b (1 + R (W_ab / W(dx))^n) grad_a W_ab      (Lind eq. 10, R = 0.2, n = 4),
+// with the step-size-free diffusion coefficient D / dt = A h U (Skillen et al. 2013 write D = A h |u| dt;
+// U here is the scene's reference speed, so that particles near stagnation points are shifted too).
+// The carried fields follow the shifted particle, not the fluid (Lind eq. 11 as a rate):
+//   du_a/dt += (du_a . grad) u_a,   drho_a/dt += du_a . grad rho_a (WCSPH with the continuity equation),
+// with grad f_a = sum_b V_b (f_b - f_a) grad_a W_ab. Ghosts count as neighbours, so a wall is no
+// free surface: the lattice next to it is not pulled apart.
+#include <cmath>
+
+#include "core/param_builder.hpp"
+#include "kernels/kernel.hpp"
+#include "rhs/particle_term.hpp"
+#include "rhs/reference_speed.hpp"
+#include "rhs/term_registry.hpp"
+
+namespace arksph {
+namespace {
+
+constexpr double kAntiClumpR = 0.2;  // Lind et al. 2012 eq. 10
+constexpr int kAntiClumpN = 4;
+
+class Shifting final : public ParticleTerm<Shifting> {
+ public:
+  Shifting(double coefficient, double speed, double h, double w_dx, bool density)
+      : scale_(coefficient * h * speed), inv_w_dx_(1.0 / w_dx), density_(density) {}
+  std::string name() const override { return "regularisation:shifting"; }
+  bool moves_particles() const override { return true; }
+  template <class Neighbors>
+  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    const bool two_d = f.dim == 2;
+    const double ua = f.u[a], va = two_d ? f.v[a] : 0.0, rho_a = f.rho[a];
+    double cx = 0, cy = 0;                  // grad C
+    double uxx = 0, uxy = 0, uyx = 0, uyy = 0;  // grad u: u_{i,j} = d u_i / d x_j
+    double rx_sum = 0, ry_sum = 0;          // grad rho
+    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double w, double F) {
+      const double vb = f.vol[b];
+      const double q = w * inv_w_dx_;
+      const double q2 = q * q;
+      const double clump = 1.0 + kAntiClumpR * q2 * q2;  // n = 4
+      const double gx = F * rx, gy = F * ry;             // grad_a W_ab
+      cx += vb * clump * gx;
+      cy += vb * clump * gy;
+      const double du = vb * (f.u[b] - ua), dv = two_d ? vb * (f.v[b] - va) : 0.0;
+      uxx += du * gx;
+      uxy += du * gy;
+      uyx += dv * gx;
+      uyy += dv * gy;
+      if (density_) {
+        const double dr = vb * (f.rho[b] - rho_a);
+        rx_sum += dr * gx;
+        ry_sum += dr * gy;
+      }
+    });
+    const double sx = -scale_ * cx, sy = two_d ? -scale_ * cy : 0.0;
+    f.shift_u[a] = sx;
+    f.dudt[a] += sx * uxx + sy * uxy;
+    if (two_d) {
+      f.shift_v[a] = sy;
+      f.dvdt[a] += sx * uyx + sy * uyy;
+    }
+    if (density_) f.drhodt[a] += sx * rx_sum + sy * ry_sum;
+  }
+
+ private:
+  double scale_;      // A h U
+  double inv_w_dx_;   // 1 / W(dx)
+  bool density_;      // the density is a state (continuity equation): carried too
+};
+
+static_assert(kAntiClumpN == 4, "the anti-clumping factor is written out for n = 4");
+
+}  // namespace
+
+Part<TermFactory> regularisation_shifting() {
+  return {"shifting",
+          "Fickian particle shifting as a velocity in dr/dt (Lind et al. 2012 eqs. 8-11), carried fields corrected",
+          [](const Scene& s) -> std::unique_ptr<Term> {
+            const double h = s.h_over_dx * s.spacing;
+            const Kernel kernel = make_kernel(s.kernel, h, s.dimension);
+            double speed = part_param<double>(s, "method.shifting_speed");
+            if (speed <= 0) speed = reference_speed(s);
+            const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
+            return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed, h,
+                                              kernel.W(s.spacing), density);
+          },
+          {number("method.shifting_coefficient", 2.0).in(at_least(0))
+               .doc("A of the shifting velocity du = -A h U grad C (Lind et al. 2012 eq. 8 with D = A h U dt)"),
+           number("method.shifting_speed", 0.0).in(at_least(0)).unit("m/s")
+               .doc("U of the shifting velocity (0: the reference speed, the largest initial, wall or sqrt(|g| L) speed)")}};
+}
+
+}  // namespace arksph

@@ -3,8 +3,9 @@
 //   drho_a/dt += delta h c sum_b psi_ab . grad_a W_ab V_b,   psi_ab = 2 (rho_b - rho_a) (r_b - r_a) / |r_ab|^2,
 // so that, with grad_a W_ab = F r_ab, psi_ab . grad_a W_ab = -2 F (rho_b - rho_a). Under a body force
 // g the hydrostatic part of the density difference is left out (Fourtakas et al. 2019, linearised
-// equation of state): rho_b - rho_a becomes rho_b - rho_a - rho0_a (g . r_ab) / c^2, so that a
-// fluid at rest in hydrostatic balance has no diffusive flux.
+// equation of state, p_H = rho0 g . r + const): rho_b - rho_a becomes
+//   rho_b - rho_a + rho0_a (g . r_ab) / c^2,   r_ab = r_a - r_b,
+// so that a fluid at rest in hydrostatic balance has no diffusive flux.
 #include "core/expression.hpp"
 #include "core/param_builder.hpp"
 #include "rhs/particle_term.hpp"
@@ -26,7 +27,7 @@ class DensityDiffusion final : public ParticleTerm<DensityDiffusion> {
     const double hx = rho0 * hx_, hy = f.dim == 2 ? rho0 * hy_ : 0.0;
     double sum = 0;
     nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double dynamic = f.rho[b] - rho_a - (hx * rx + hy * ry);
+      const double dynamic = f.rho[b] - rho_a + (hx * rx + hy * ry);
       sum -= F * f.vol[b] * dynamic;
     });
     f.drhodt[a] += coeff_ * sum;

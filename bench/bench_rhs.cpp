@@ -19,6 +19,17 @@ void BM_RhsEval(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<long>(p.model.rhs->layout().n));
 }
 
+// The default f with the regularisation of WCSPH: particle shifting and delta-SPH (both in the sweep).
+void BM_RhsEvalRegularised(benchmark::State& state) {
+  Prepared p = prepare(static_cast<int>(state.range(0)), "wcsph",
+                       {"method.regularisation=\"shifting\"", "method.density_diffusion=\"delta_sph\""});
+  for (auto _ : state) {
+    p.model.rhs->eval(0.0, p.y.data(), p.ydot.data());
+    benchmark::DoNotOptimize(p.ydot.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(p.model.rhs->layout().n));
+}
+
 // The same f with method.force_sweep = false: the pair list with kernel values stored, then each
 // term walks it on its own (the path before the sweep, and still the one of the projection schemes).
 void BM_RhsEvalPairWalk(benchmark::State& state) {
@@ -45,6 +56,7 @@ void BM_Term(benchmark::State& state, const std::string& term_name) {
 }
 
 BENCHMARK(BM_RhsEval)->Arg(50)->Arg(100)->Arg(240)->UseRealTime()->Unit(benchmark::kMicrosecond);  // wall clock: threads count
+BENCHMARK(BM_RhsEvalRegularised)->Arg(50)->Arg(100)->Arg(240)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_RhsEvalPairWalk)->Arg(50)->Arg(100)->Arg(240)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Term, eos, std::string("eos:tait"))->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Term, continuity, std::string("continuity:szewc19"))->Arg(100)->Unit(benchmark::kMicrosecond);

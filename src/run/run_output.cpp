@@ -214,6 +214,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("metrics", metrics);
   Json params = Json::object();
   params.set("h", model_.h).set("sound_speed", model_.sound_speed);
+  if (model_.reference_speed > 0) params.set("reference_speed", model_.reference_speed);
   j.set("derived", params);
   j.set("resolved_scene", scene_.resolved_toml);
   write_json_atomic(scene_.directory + "/summary.json", j);

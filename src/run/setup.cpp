@@ -9,6 +9,7 @@
 #include "core/expression.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
+#include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 #include "run/interrupt.hpp"
@@ -64,6 +65,8 @@ Model build_model(const Scene& scene) {
   if (equations_of_state().at(scene.equation_of_state).traits.adds_state("energy"))
     model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));
   auto terms = terms_from_scene(scene, model.sound_speed);
+  for (const auto& t : terms)
+    if (t->moves_particles()) model.reference_speed = reference_speed(scene);
   for (const auto& t : terms) model.terms.push_back(t->name());
   bool walls = false, periodic = false;
   for (int s = 0; s < 2 * scene.dimension; ++s) {

@@ -107,9 +107,9 @@ std::vector<Group> general_keys() {
             .doc("symmetric form of the pressure gradient (wcsph)").to(&Scene::pressure_gradient),
         choice("method.density_correction", "none").family("density_correction")
             .doc("position correction after the projection (projection schemes)").to(&Scene::density_correction),
-        choice("method.regularisation", "none").family("regularisation")
+        choice("method.regularisation", "auto").family("regularisation")
             .doc("particle regularisation: a velocity added to dr/dt inside f(t, y)").to(&Scene::regularisation),
-        choice("method.density_diffusion", "none").family("density_diffusion")
+        choice("method.density_diffusion", "auto").family("density_diffusion")
             .doc("diffusive term in the continuity equation (wcsph)").to(&Scene::density_diffusion)},
        ""},
       {projection_params(), "isph"},

@@ -18,6 +18,7 @@
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
 #include "io/input_file.hpp"
+#include "io/scene_auto.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
@@ -321,6 +322,7 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
   read_sides(sections.at("boundary"), s);
   check_fluid(sections.at("fluid"), s);
   read_phases(root, s);
+  resolve_auto_values(s);
   check_schemes(sections, s);
   check_method(sections.at("method"), s);
   check_time_output(sections, s);

@@ -20,8 +20,8 @@ double since(std::chrono::steady_clock::time_point t0) {
 
 const std::vector<Param>& projection_params() {
   static const std::vector<Param> params = {
-      choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained"})
-          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md)")
+      choice("method.projection", "auto").choices({"auto", "cummins_rudman", "constrained"})
+          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md); auto: constrained for isph unless a key needs C&R's (density_correction, projection_points = stages, ppe_operator = exact), else cummins_rudman")
           .to(&Scene::projection),
       number("method.constraint_relaxation", 1.0).in(at_least(0))
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")

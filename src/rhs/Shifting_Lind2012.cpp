@@ -4,6 +4,10 @@
 //   grad C_a = sum_b V_b (1 + R (W_ab / W(dx))^n) grad_a W_ab      (Lind eq. 10, R = 0.2, n = 4),
 // with the step-size-free diffusion coefficient D / dt = A h U (Skillen et al. 2013 write D = A h |u| dt;
 // U here is the scene's reference speed, so that particles near stagnation points are shifted too).
+// Where grad C is large (a lid corner, a particle pushed into a wall) the velocity saturates smoothly
+// at s U, du <- du / sqrt(1 + |du|^2 / (s U)^2) with s = method.shifting_limit (Lind et al. 2012 limit
+// the displacement per step in the same spirit); on a nearly regular lattice |du| << s U and the
+// factor is 1 to second order.
 // The carried fields follow the shifted particle, not the fluid (Lind eq. 11 as a rate):
 //   du_a/dt += (du_a . grad) u_a,   drho_a/dt += du_a . grad rho_a (WCSPH with the continuity equation),
 // with grad f_a = sum_b V_b (f_b - f_a) grad_a W_ab. Ghosts count as neighbours, so a wall is no
@@ -24,8 +28,11 @@ constexpr int kAntiClumpN = 4;
 
 class Shifting final : public ParticleTerm<Shifting> {
  public:
-  Shifting(double coefficient, double speed, double h, double w_dx, bool density)
-      : scale_(coefficient * h * speed), inv_w_dx_(1.0 / w_dx), density_(density) {}
+  Shifting(double coefficient, double speed, double limit, double h, double w_dx, bool density)
+      : scale_(coefficient * h * speed),
+        inv_limit2_(limit > 0 && speed > 0 ? 1.0 / (limit * speed * limit * speed) : 0.0),  // U = 0: du = 0
+        inv_w_dx_(1.0 / w_dx),
+        density_(density) {}
   std::string name() const override { return "regularisation:shifting"; }
   bool moves_particles() const override { return true; }
   template <class Neighbors>
@@ -54,7 +61,12 @@ class Shifting final : public ParticleTerm<Shifting> {
         ry_sum += dr * gy;
       }
     });
-    const double sx = -scale_ * cx, sy = two_d ? -scale_ * cy : 0.0;
+    double sx = -scale_ * cx, sy = two_d ? -scale_ * cy : 0.0;
+    if (inv_limit2_ > 0) {
+      const double damp = 1.0 / std::sqrt(1.0 + (sx * sx + sy * sy) * inv_limit2_);
+      sx *= damp;
+      sy *= damp;
+    }
     f.shift_u[a] = sx;
     f.dudt[a] += sx * uxx + sy * uxy;
     if (two_d) {
@@ -66,6 +78,7 @@ class Shifting final : public ParticleTerm<Shifting> {
 
  private:
   double scale_;      // A h U
+  double inv_limit2_; // 1 / (s U)^2, 0 without a limit
   double inv_w_dx_;   // 1 / W(dx)
   bool density_;      // the density is a state (continuity equation): carried too
 };
@@ -83,11 +96,14 @@ Part<TermFactory> regularisation_shifting() {
             double speed = part_param<double>(s, "method.shifting_speed");
             if (speed <= 0) speed = reference_speed(s);
             const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
-            return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed, h,
+            return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed,
+                                              part_param<double>(s, "method.shifting_limit"), h,
                                               kernel.W(s.spacing), density);
           },
-          {number("method.shifting_coefficient", 2.0).in(at_least(0))
+          {number("method.shifting_coefficient", 8.0).in(at_least(0))
                .doc("A of the shifting velocity du = -A h U grad C (Lind et al. 2012 eq. 8 with D = A h U dt)"),
+           number("method.shifting_limit", 0.2).in(at_least(0))
+               .doc("s: the shifting velocity saturates smoothly at s U (0: no limit)"),
            number("method.shifting_speed", 0.0).in(at_least(0)).unit("m/s")
                .doc("U of the shifting velocity (0: the reference speed, the largest initial, wall or sqrt(|g| L) speed)")}};
 }

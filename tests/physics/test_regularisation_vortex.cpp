@@ -1,4 +1,5 @@
-// Particle shifting on the periodic Taylor-Green vortex (Re = 100, 25 x 25, t = 0.5): against the
+// Particle shifting (A = 8, no limit) on the periodic Taylor-Green vortex (Re = 100, 25 x 25, t = 0.5),
+// ISPH with C&R's projection: against the
 // exact decay exp(-8 pi^2 nu t), each scheme with shifting (and delta-SPH for WCSPH) has a relative
 // L1 velocity error at most 0.05 and at most a quarter of the error of the same run without
 // regularisation. Measured: isph 0.030 against 0.24, isph-gpps 0.025 against 0.51, wcsph 0.0074
@@ -34,9 +35,11 @@ viscosity = 0.01
 [initial]
 velocity = ["-cos(2*pi*x)*sin(2*pi*y)", "sin(2*pi*x)*cos(2*pi*y)"]
 [method]
+projection = "cummins_rudman"
 sound_speed = 10
 ppe_pressure_level = "zero_min"
 shifting_coefficient = 8
+shifting_limit = 0
 [time]
 end = 0.5
 [metrics]

@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/parameter.hpp"
@@ -113,7 +114,11 @@ struct Scene {
   // Parameters that parts declare without a member here (core/param_builder.hpp), by dotted key.
   ParamTable part_params;
 
-  // The resolved scene as TOML text (all keys), written into summary.json.
+  // The keys read as "auto" and the values their rules chose (Param::automatic), in catalog order:
+  // printed in the run header and written into summary.json ("resolved").
+  std::vector<std::pair<std::string, std::string>> automatic;
+
+  // The resolved scene as TOML text (all keys, "auto" replaced), written into summary.json.
   std::string resolved_toml;
 };
 

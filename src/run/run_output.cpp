@@ -208,6 +208,9 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   Json params = Json::object();
   params.set("h", model_.h).set("sound_speed", model_.sound_speed);
   j.set("derived", params);
+  Json automatic = Json::object();  // the keys given as "auto" and the values their rules chose
+  for (const auto& [key, value] : scene_.automatic) automatic.set(key, value);
+  j.set("resolved", automatic);
   j.set("resolved_scene", scene_.resolved_toml);
   write_json_atomic(scene_.directory + "/summary.json", j);
 }

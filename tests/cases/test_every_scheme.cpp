@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,17 @@ constexpr int kSecondsShort = 300;
 
 const std::vector<std::string> kSchemes = {"wcsph", "isph", "isph-gpps"};
 
+// Every scene file under cases/ (a TOML file with a [domain] table; sweeps and studies have none),
+// each with its TEST_CASE below.
+const std::vector<std::string> kScenes = {
+    "cases/cavity_re100/scene.toml",       "cases/cavity_re1000/scene.toml",
+    "cases/hydrostatic_1d/scene.toml",     "cases/isph_order/taylor_green_re100.toml",
+    "cases/perturbed_lattice/scene.toml",  "cases/poiseuille/scene.toml",
+    "cases/rayleigh_taylor/scene.toml",    "cases/rayleigh_taylor/scene_cr1999.toml",
+    "cases/robustness_map/scene.toml",     "cases/spin_down/periodic/scene.toml",
+    "cases/spin_down/scene.toml",          "cases/sweeps/taylor_green_small.toml",
+};
+
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
 // the words the one-line message must hold; `to_end_only`: the short run passes.
 struct Refusal {
@@ -70,6 +82,7 @@ int error_lines(const std::string& err) {
 }
 
 void check_case(const std::string& scene, const std::vector<Refusal>& refusals = {}) {
+  REQUIRE(std::find(kScenes.begin(), kScenes.end(), scene) != kScenes.end());
   const std::string path = std::string(ARKSPH_SOURCE_DIR) + "/" + scene;
   const double scene_end = arksph::read_scene_file(path, {}).end;
   const double end = kToEnd ? scene_end : std::min(scene_end, kShortEnd);
@@ -120,6 +133,26 @@ void check_case(const std::string& scene, const std::vector<Refusal>& refusals =
 }
 
 }  // namespace
+
+#ifndef ARKSPH_CASES_TO_END
+TEST_CASE("case: every scene file under cases/ is listed here") {
+  std::vector<std::string> found;
+  const fs::path root(ARKSPH_SOURCE_DIR);
+  for (const auto& entry : fs::recursive_directory_iterator(root / "cases")) {
+    if (!entry.is_regular_file() || entry.path().extension() != ".toml") continue;
+    std::ifstream in(entry.path());
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("[domain]", 0) == 0) {
+        found.push_back(fs::relative(entry.path(), root).string());
+        break;
+      }
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<std::string> listed = kScenes;
+  std::sort(listed.begin(), listed.end());
+  CHECK(found == listed);
+}
+#endif
 
 TEST_CASE(CASE_TEST("cavity_re100")) { check_case("cases/cavity_re100/scene.toml"); }
 TEST_CASE(CASE_TEST("cavity_re1000")) { check_case("cases/cavity_re1000/scene.toml"); }

@@ -59,6 +59,13 @@ class ParamBuilder {
   ParamBuilder& variables(std::vector<std::string> v) { p_.variables = std::move(v); return *this; }
   ParamBuilder& required() { p_.required = true; return *this; }
   ParamBuilder& custom() { p_.custom = true; return *this; }
+  // The default becomes "auto" (which may also be set explicitly): once the whole scene is read,
+  // rule(scene) gives the value, a choice's text or "true"/"false" for a flag.
+  ParamBuilder& automatic(std::function<std::string(const Scene&)> rule) {
+    p_.fallback = std::string("auto");
+    p_.automatic = std::move(rule);
+    return *this;
+  }
   template <class T>
   ParamBuilder& to(T Scene::*member) {
     p_.store = [member](Scene& s, const ParamValue& v) { s.*member = param_detail::from_value<T>(v); };

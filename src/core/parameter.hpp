@@ -45,7 +45,7 @@ struct Param {
   };
   std::string key;     // dotted scene key, e.g. "method.cleary_xi"
   Type type = Type::number;
-  ParamValue fallback;  // the default; std::monostate-like "required" when `required` is set
+  ParamValue fallback;  // the default ("auto" when `automatic` is set); unused when `required` is set
   bool required = false;
   Range range;                       // numeric types
   std::vector<std::string> choices;  // choice: the admissible values when fixed here
@@ -56,6 +56,10 @@ struct Param {
   std::string doc;                   // one line: meaning and source (paper and equation)
   std::vector<std::string> schemes;  // schemes that read it (empty: all); others warn if it is set
   bool custom = false;  // read and checked by the scene reader's own code (the box, the sides, phases)
+  // The rule that gives the value of a key left at "auto" (its default then), once the whole scene is
+  // read (io/scene_reader.cpp): a choice's text, or "true"/"false" for a flag. Empty when the key
+  // takes no "auto". Declared next to the key, whose doc string states the rule.
+  std::function<std::string(const Scene&)> automatic;
 
   // Where the value lives in a Scene: a member, or the scene's table of part parameters.
   std::function<void(Scene&, const ParamValue&)> store;

@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/parameter.hpp"
@@ -70,9 +71,9 @@ struct Scene {
   std::string density_mode = "continuity";      // "continuity" (Szewc eq. 19) | "summation" (Szewc eq. 21)
   std::string pressure_gradient = "colagrossi"; // "colagrossi" (Szewc eq. 23) | "monaghan" (C&R eq. 1)
   std::string density_correction = "none";
-  std::string regularisation = "auto";     // particle regularisation in dr/dt (rhs/term_registry.hpp)
-  std::string density_diffusion = "auto";  // delta-SPH in the continuity equation (wcsph)
-  std::string projection = "auto";  // isph: "auto" (resolved by io/scene_auto.cpp) | "cummins_rudman" (after each step) | "constrained" (pressure in f)
+  std::string regularisation = "none";     // particle regularisation in dr/dt (rhs/term_registry.hpp)
+  std::string density_diffusion = "none";  // delta-SPH in the continuity equation (wcsph)
+  std::string projection = "cummins_rudman";  // isph: "cummins_rudman" (after each step) | "constrained" (pressure in f)
   double constraint_relaxation = 1.0;  // constrained projection: alpha = this x U/h, the decay rate of D u
   std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_divergence = "cummins_rudman";  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
@@ -116,7 +117,11 @@ struct Scene {
   // Parameters that parts declare without a member here (core/param_builder.hpp), by dotted key.
   ParamTable part_params;
 
-  // The resolved scene as TOML text (all keys), written into summary.json.
+  // The keys read as "auto" and the values their rules chose (Param::automatic), in catalog order:
+  // printed in the run header and written into summary.json ("resolved").
+  std::vector<std::pair<std::string, std::string>> automatic;
+
+  // The resolved scene as TOML text (all keys, "auto" replaced), written into summary.json.
   std::string resolved_toml;
 };
 

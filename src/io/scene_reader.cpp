@@ -18,7 +18,6 @@
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
 #include "io/input_file.hpp"
-#include "io/scene_auto.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
@@ -130,7 +129,8 @@ void check_phase_region(const Scene& s, const Section& phase, const std::string&
 // One value of a key declared in the catalog, checked against its type, range and choices.
 ParamValue read_value(const Section& sec, const std::string& name, const Param& p, const Scene& s) {
   switch (p.type) {
-    case Param::Type::boolean: return sec.boolean(name, std::get<bool>(p.fallback));
+    case Param::Type::boolean:  // a key with a rule has the fallback "auto" and is read here only when set
+      return sec.boolean(name, std::holds_alternative<bool>(p.fallback) ? std::get<bool>(p.fallback) : false);
     case Param::Type::integer: {
       const long v = sec.integer(name, p.required ? std::nullopt : std::optional<long>(std::get<long>(p.fallback)));
       if (!p.allowed.empty() && std::find(p.allowed.begin(), p.allowed.end(), v) == p.allowed.end()) {
@@ -245,10 +245,11 @@ void read_phases(const Section& root, Scene& s) {
 }
 
 // Selected parts must apply to the scheme; keys of other schemes give a warning when set.
-void check_schemes(const std::map<std::string, Section>& sections, const Scene& s) {
+void check_schemes(const std::map<std::string, Section>& sections, const Scene& s,
+                   const std::vector<const Param*>& automatic) {
   for (const CatalogKey& k : scene_catalog()) {
     const Param& p = k.param;
-    if (p.custom) continue;
+    if (p.custom || std::find(automatic.begin(), automatic.end(), &p) != automatic.end()) continue;
     const auto dot = p.key.find('.');
     const Section& sec = sections.at(p.key.substr(0, dot));
     const std::string name = p.key.substr(dot + 1);
@@ -263,6 +264,28 @@ void check_schemes(const std::map<std::string, Section>& sections, const Scene& 
     if (!p.schemes.empty() && std::find(p.schemes.begin(), p.schemes.end(), s.scheme) == p.schemes.end() &&
         p.load(s) != p.fallback)
       sec.reporter().warn(sec.key(name), "unused by scheme " + s.scheme);
+  }
+}
+
+// A key with a rule (Param::automatic) left out, or set to "auto": its value is chosen once the
+// whole scene is read (resolve_automatic).
+bool left_automatic(const Section& sec, const std::string& name, const Param& p) {
+  if (!p.automatic) return false;
+  if (!sec.has(name)) return true;
+  const toml::node* n = sec.node(name);
+  return n->is_string() && *n->value_exact<std::string>() == "auto";
+}
+
+// Each key left at "auto" takes the value its rule gives for this scene (text for a choice, "true"
+// or "false" for a flag). A rule that reads another automatic key applies that key's rule itself
+// when it finds "auto" there, so their order does not matter.
+void resolve_automatic(Scene& s, const std::vector<const Param*>& automatic) {
+  s.automatic.clear();
+  for (const Param* p : automatic) {
+    const std::string value = p->automatic(s);
+    if (p->type == Param::Type::boolean) p->store(s, value == "true");
+    else p->store(s, value);
+    s.automatic.emplace_back(p->key, value);
   }
 }
 
@@ -312,18 +335,22 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
     if (table != "phase") sections.emplace(table, root.section(table, keys_of_table(table)));
   Scene s;
   s.source = source_name;
+  std::vector<const Param*> automatic;  // keys left at "auto", in catalog order
   for (const CatalogKey& k : scene_catalog()) {
     if (k.param.key == "domain.max") read_domain(sections.at("domain"), s);  // the box before the rest
     if (k.param.custom) continue;
     const auto dot = k.param.key.find('.');
-    k.param.store(s, read_value(sections.at(k.param.key.substr(0, dot)), k.param.key.substr(dot + 1), k.param, s));
+    const Section& sec = sections.at(k.param.key.substr(0, dot));
+    const std::string name = k.param.key.substr(dot + 1);
+    if (left_automatic(sec, name, k.param)) automatic.push_back(&k.param);
+    else k.param.store(s, read_value(sec, name, k.param, s));
   }
   if (s.name.empty()) sections.at("scene").fail("name", "must not be empty");
   read_sides(sections.at("boundary"), s);
   check_fluid(sections.at("fluid"), s);
   read_phases(root, s);
-  resolve_auto_values(s);
-  check_schemes(sections, s);
+  check_schemes(sections, s, automatic);
+  resolve_automatic(s, automatic);
   check_method(sections.at("method"), s);
   check_time_output(sections, s);
   check_scene_limits(sections, s);

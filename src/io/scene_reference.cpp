@@ -51,11 +51,13 @@ std::string default_text(const Param& p) {
 }
 
 std::string admissible(const Param& p) {
+  if (p.type == Param::Type::boolean && p.automatic) return "true, false, or auto (see the description)";
   if (p.type == Param::Type::choice) {
-    if (!p.family.empty()) return "a registered " + p.family + " (below)";
+    const std::string automatic = p.automatic ? ", or auto (see the description)" : "";
+    if (!p.family.empty()) return "a registered " + p.family + " (below)" + automatic;
     std::string list;
     for (const auto& c : p.choices) list += (list.empty() ? "" : ", ") + c;
-    return list;
+    return list + automatic;
   }
   if (!p.allowed.empty()) {
     std::string list;

@@ -57,11 +57,13 @@ std::string comment(const Param& p) {
     if (!p.family.empty())
       if (const FamilyInfo* f = find_family(p.family))
         for (const auto& e : f->entries) values.push_back(e.name);
+    if (p.automatic) values.push_back("auto");
     std::string list;
     for (const auto& v : values) list += (list.empty() ? "" : " | ") + quote(v);
     if (values.size() <= 8) c += ": " + list;
     else c += " (arksph list: " + p.family + ")";
   }
+  if (p.type == Param::Type::boolean && p.automatic) c += ": true | false | \"auto\"";
   const std::string range = p.range.describe();
   if (!range.empty() && p.type != Param::Type::choice) c += "; " + range;
   if (!p.unit.empty()) c += " [" + p.unit + "]";
@@ -86,6 +88,13 @@ std::string custom_text(const Scene& s, const std::string& key) {
   return "";
 }
 
+// The value the rule of `key` chose when the scene had "auto" there; empty otherwise.
+std::string automatic_value(const Scene& s, const std::string& key) {
+  for (const auto& [k, v] : s.automatic)
+    if (k == key) return v;
+  return "";
+}
+
 std::string write(const Scene& s, bool comments) {
   std::ostringstream o;
   bool first = true;
@@ -105,10 +114,14 @@ std::string write(const Scene& s, bool comments) {
     for (const CatalogKey& k : scene_catalog()) {
       const Param& p = k.param;
       if (p.key.compare(0, table.size() + 1, table + ".") != 0) continue;
-      const std::string text = p.custom ? custom_text(s, p.key) : value_text(p.load(s));
+      std::string text = p.custom ? custom_text(s, p.key) : value_text(p.load(s));
       if (text.empty()) continue;
+      // The commented form shows "auto" where the scene had it, and what it gave; the plain form
+      // (Scene::resolved_toml) holds the value, so that it reads back to the same run.
+      const std::string chosen = comments ? automatic_value(s, p.key) : "";
+      if (!chosen.empty()) text = quote("auto");
       o << p.key.substr(table.size() + 1) << " = " << text;
-      if (comments) o << "   # " << comment(p);
+      if (comments) o << "   # " << comment(p) << (chosen.empty() ? "" : "; auto gives " + quote(chosen) + " here");
       o << "\n";
     }
   }

@@ -18,10 +18,33 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
+namespace {
+// method.ppe_divergence = "auto". isph-gpps: the difference form; with C&R eq. 17 the cavity blows
+// up (Re = 100 at t ~ 2.2, Re = 400 at t ~ 2.9, Re = 1000 by t ~ 2), with the difference form it
+// runs (the cavity's walls also need boundary.free_slip_divergence, see its rule). isph: C&R eq. 17,
+// C&R's scheme: the difference form is more accurate on the cavities but the Rayleigh-Taylor case
+// with it blows up at t ~ 0.4.
+std::string automatic_ppe_divergence(const Scene& s) {
+  return scheme_traits(s.scheme).grid ? "difference" : "cummins_rudman";
+}
+
+// method.ppe_pressure_level = "auto". The projection after each step: zero_min. With a zero-mean P
+// the suction (P < 0) makes pairs attract (C&R eq. 11) and isph blows up on the periodic
+// Taylor-Green vortex (Re = 100, 50 x 50, at t ~ 0.49) and on the cavity (Re = 100, 400 and 1000 at
+// t ~ 0.38, 0.68 and 0.73); with zero_min they run (to t = 1 and 3), and the spin-down ends (t = 10)
+// with a quarter of the density error (CV 0.045 against 0.17).
+// isph-gpps corrects the velocity with the grid's gradient, which the level does not change. The
+// constrained projection: zero_mean, the level its pressure converges with at the velocity's order
+// (ConstrainedPressure.hpp).
+std::string automatic_ppe_pressure_level(const Scene& s) {
+  return s.projection == "constrained" ? "zero_mean" : "zero_min";
+}
+}  // namespace
+
 const std::vector<Param>& projection_params() {
   static const std::vector<Param> params = {
-      choice("method.projection", "auto").choices({"auto", "cummins_rudman", "constrained"})
-          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md); auto: constrained for isph unless a key needs C&R's (density_correction, projection_points = stages, ppe_operator = exact), else cummins_rudman")
+      choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained"})
+          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md)")
           .to(&Scene::projection),
       number("method.constraint_relaxation", 1.0).in(at_least(0))
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
@@ -29,12 +52,14 @@ const std::vector<Param>& projection_params() {
       choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})
           .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; scheme isph with klu only)")
           .to(&Scene::ppe_operator),
-      choice("method.ppe_divergence", "cummins_rudman").choices({"cummins_rudman", "difference"})
-          .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts")
-          .to(&Scene::ppe_divergence),
-      choice("method.ppe_pressure_level", "zero_mean").choices({"zero_mean", "zero_min"})
-          .doc("free level of P of the Neumann problem: zero mean, or zero minimum (P >= 0, so C&R eq. 11 never attracts)")
-          .to(&Scene::ppe_pressure_level),
+      choice("method.ppe_divergence", "auto").choices({"cummins_rudman", "difference"})
+          .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts; "
+               "auto: difference for isph-gpps, cummins_rudman for isph")
+          .automatic(automatic_ppe_divergence).to(&Scene::ppe_divergence),
+      choice("method.ppe_pressure_level", "auto").choices({"zero_mean", "zero_min"})
+          .doc("free level of P of the Neumann problem: zero mean, or zero minimum (P >= 0, so C&R eq. 11 never attracts); "
+               "auto: zero_min, but zero_mean for the constrained projection")
+          .automatic(automatic_ppe_pressure_level).to(&Scene::ppe_pressure_level),
       number("method.ppe_pressure_offset", 0.0).in(at_least(0))
           .doc("constant added to P after the level (a background pressure)").to(&Scene::ppe_pressure_offset),
   };

@@ -18,11 +18,9 @@ Part<TermFactory> equation_of_state_tait();
 Part<TermFactory> equation_of_state_ideal_gas();
 Part<TermFactory> density_continuity();
 Part<TermFactory> density_summation();
-Part<TermFactory> regularisation_auto();
 Part<TermFactory> regularisation_none();
 Part<TermFactory> regularisation_shifting();
 Part<TermFactory> regularisation_transport_velocity();
-Part<TermFactory> density_diffusion_auto();
 Part<TermFactory> density_diffusion_none();
 Part<TermFactory> density_diffusion_delta_sph();
 
@@ -73,7 +71,6 @@ const Registry<TermFactory>& density_modes() {
 
 const Registry<TermFactory>& regularisations() {
   static const Registry<TermFactory> r("regularisation", "method.regularisation", {
-      regularisation_auto(),
       regularisation_none(),
       regularisation_shifting(),
       regularisation_transport_velocity(),
@@ -83,19 +80,12 @@ const Registry<TermFactory>& regularisations() {
 
 const Registry<TermFactory>& density_diffusions() {
   static const Registry<TermFactory> r("density_diffusion", "method.density_diffusion", {
-      density_diffusion_auto(),
       density_diffusion_none(),
       density_diffusion_delta_sph(),
   });
   return r;
 }
 
-Part<TermFactory> regularisation_auto() {
-  return {"auto", "resolved at start-up (io/scene_auto.cpp): shifting for every scheme"};
-}
-Part<TermFactory> density_diffusion_auto() {
-  return {"auto", "resolved at start-up (io/scene_auto.cpp): delta_sph for wcsph with the continuity equation, else none"};
-}
 Part<TermFactory> regularisation_none() { return {"none", "particles move with the fluid velocity, dr/dt = u"}; }
 
 }  // namespace arksph

@@ -1,0 +1,157 @@
+// The "auto" defaults: each key that takes "auto" gets its rule's value when the scene is read, the
+// run records which keys those were (Scene::automatic), and an explicit value is used as given.
+#include <doctest/doctest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "io/scene_catalog.hpp"
+#include "io/scene_reader.hpp"
+
+using namespace arksph;
+
+namespace {
+
+// A walled box with only the keys without defaults.
+const std::string kWalled = R"s(
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[fluid]
+spacing = 0.1
+[time]
+end = 1.0
+)s";
+
+// The same box, periodic on every side.
+const std::string kPeriodic = kWalled + R"s(
+[boundary]
+left = { kind = "periodic" }
+right = { kind = "periodic" }
+bottom = { kind = "periodic" }
+top = { kind = "periodic" }
+)s";
+
+const std::string kPhase = "\n[[phase]]\nwhere = \"y > 0.5\"\ndensity = 1.8\n";
+
+Scene read(const std::string& text, const std::vector<std::string>& sets = {}) {
+  std::ostringstream sink;
+  return read_scene_text(text, "test.toml", sets, sink);
+}
+
+// The value the scene's rule chose for `key`; empty when the key was not "auto".
+std::string chosen(const Scene& s, const std::string& key) {
+  for (const auto& [k, v] : s.automatic)
+    if (k == key) return v;
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("auto: every key with a rule defaults to auto, and nothing is left at auto after reading") {
+  int with_rule = 0;
+  for (const CatalogKey& k : scene_catalog()) {
+    if (!k.param.automatic) continue;
+    ++with_rule;
+    CAPTURE(k.param.key);
+    CHECK(std::get<std::string>(k.param.fallback) == "auto");
+  }
+  CHECK(with_rule >= 5);  // free_slip_divergence, density_mode, ppe_divergence, ppe_pressure_level, correction_solver
+  for (const std::string scheme : {"wcsph", "isph", "isph-gpps"}) {
+    CAPTURE(scheme);
+    const Scene s = read(kWalled, {"method.scheme=" + scheme});
+    CHECK(s.automatic.size() == static_cast<std::size_t>(with_rule));
+    for (const auto& [key, value] : s.automatic) {
+      CAPTURE(key);
+      CHECK(value != "auto");
+    }
+    // The resolved scene holds the chosen values: read back, no key is left to a rule.
+    const Scene back = read(s.resolved_toml);
+    CHECK(back.automatic.empty());
+    CHECK(back.density_mode == s.density_mode);
+    CHECK(back.ppe_divergence == s.ppe_divergence);
+    CHECK(back.ppe_pressure_level == s.ppe_pressure_level);
+    CHECK(back.correction_solver == s.correction_solver);
+    CHECK(back.free_slip_divergence == s.free_slip_divergence);
+  }
+}
+
+TEST_CASE("auto: density_mode is summation for wcsph with phases, else continuity") {
+  CHECK(read(kWalled).density_mode == "continuity");
+  CHECK(read(kWalled + kPhase).density_mode == "summation");
+  CHECK(chosen(read(kWalled + kPhase), "method.density_mode") == "summation");
+  CHECK(read(kWalled + kPhase, {"method.scheme=isph"}).density_mode == "continuity");
+  CHECK(read(kWalled + kPhase, {"method.scheme=isph-gpps"}).density_mode == "continuity");
+}
+
+TEST_CASE("auto: the PPE pressure level is zero_min but for the constrained projection") {
+  for (const std::string& text : {kWalled, kPeriodic}) {
+    CHECK(read(text, {"method.scheme=isph"}).ppe_pressure_level == "zero_min");
+    CHECK(read(text, {"method.scheme=isph-gpps"}).ppe_pressure_level == "zero_min");
+    CHECK(read(text, {"method.scheme=isph", "method.projection=constrained"}).ppe_pressure_level == "zero_mean");
+  }
+}
+
+TEST_CASE("auto: the PPE source is C&R eq. 17 on the particles, the difference form on the grid") {
+  CHECK(read(kWalled, {"method.scheme=isph"}).ppe_divergence == "cummins_rudman");
+  CHECK(read(kWalled, {"method.scheme=isph-gpps"}).ppe_divergence == "difference");
+}
+
+TEST_CASE("auto: the correction solver") {
+  const Scene s = read(kWalled, {"method.scheme=isph", "method.density_correction=pozorski_wawrenczuk"});
+  CHECK(s.correction_solver == "fixed_point");
+  CHECK(chosen(s, "method.correction_solver") == "fixed_point");
+}
+
+TEST_CASE("auto: an explicit value is used as given and not listed as chosen") {
+  const Scene s = read(kWalled + kPhase, {"method.density_mode=continuity", "method.scheme=isph",
+                                          "method.ppe_pressure_level=zero_mean", "method.ppe_divergence=difference",
+                                          "method.correction_solver=kinsol"});
+  CHECK(s.density_mode == "continuity");
+  CHECK(s.ppe_pressure_level == "zero_mean");
+  CHECK(s.ppe_divergence == "difference");
+  CHECK(s.correction_solver == "kinsol");
+  for (const auto& [key, value] : s.automatic) {
+    CAPTURE(key);
+    CHECK(key.find("density_mode") == std::string::npos);
+    CHECK(key.find("ppe_") == std::string::npos);
+    CHECK(key.find("correction_solver") == std::string::npos);
+  }
+  // "auto" written out explicitly is the same as leaving the key out.
+  const Scene a = read(kWalled + kPhase, {"method.density_mode=auto"});
+  CHECK(a.density_mode == "summation");
+  CHECK(chosen(a, "method.density_mode") == "summation");
+}
+
+TEST_CASE("auto: a key without a rule refuses auto, naming the key") {
+  try {
+    read(kWalled, {"method.kernel=auto"});
+    FAIL("method.kernel = \"auto\" was accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("method.kernel") != std::string::npos);
+  }
+  CHECK_THROWS_AS(read(kWalled, {"method.ppe_operator=auto"}), InputError);
+}
+
+TEST_CASE("auto: the commented default scene shows auto and what it gives, and reads back the same") {
+  const std::string text = default_scene_toml();
+  CHECK(text.find("density_mode = 'auto'") != std::string::npos);
+  CHECK(text.find("auto gives 'continuity' here") != std::string::npos);
+  const Scene s = read(text);
+  CHECK(s.density_mode == "continuity");
+  CHECK(chosen(s, "method.density_mode") == "continuity");
+}
+
+TEST_CASE("auto: free-slip divergence images with walls under isph-gpps, and under wcsph when a wall moves") {
+  const std::string lid = "boundary.top={ kind = \"wall\", velocity = [1.0, 0.0] }";
+  CHECK_FALSE(read(kWalled).free_slip_divergence);
+  CHECK(read(kWalled, {lid}).free_slip_divergence);
+  CHECK(read(kWalled, {"method.scheme=isph-gpps"}).free_slip_divergence);
+  CHECK_FALSE(read(kWalled, {"method.scheme=isph", lid}).free_slip_divergence);
+  CHECK_FALSE(read(kPeriodic, {"method.scheme=isph-gpps"}).free_slip_divergence);  // no wall: the key needs one
+  CHECK(chosen(read(kWalled, {lid}), "boundary.free_slip_divergence") == "true");
+  CHECK_FALSE(read(kWalled, {lid, "boundary.free_slip_divergence=false"}).free_slip_divergence);
+  CHECK(read(kWalled, {lid, "boundary.free_slip_divergence=\"auto\""}).free_slip_divergence);
+}

@@ -217,14 +217,14 @@ void RhsEvaluator::sweep(std::size_t first, std::size_t last) {
 void RhsEvaluator::sum_stages(Partition part) {
   FluidFields& f = fields_;
   ghosts_.copy(f.rho);
-  ghosts_.copy(f.p);
+  ghosts_.copy_pressure(f);
   Term::Stage done = Term::Stage::density;
   for (std::size_t k = 0; k < terms_.size();) {
     const auto& term = terms_[k];
     if (term->stage() != done) {  // entering a later stage: ghosts take their sources' new values
       if (between_phases_) between_phases_();
       ghosts_.copy(f.rho);
-      ghosts_.copy(f.p);
+      ghosts_.copy_pressure(f);
       done = term->stage();
       if (done == Term::Stage::force) {
         f.vol.resize(f.n_all);
@@ -252,7 +252,7 @@ void RhsEvaluator::sum_stages(Partition part) {
     ++k;
   }
   ghosts_.copy(f.rho);
-  ghosts_.copy(f.p);
+  ghosts_.copy_pressure(f);
 }
 
 // ydot (if not null) from the derivatives of the real particles, in one pass over the particles:

@@ -2,7 +2,7 @@
 
 namespace arksph {
 
-BodyForceSplit::BodyForceSplit(const Scene& scene) : force_(scene.body_force, scene.dimension) {
+BodyForceSplit::BodyForceSplit(const Scene& scene) : force_(scene.body_force, scene) {
   bool walls = false;
   for (int s = 0; s < 2 * scene.dimension; ++s) walls = walls || scene.sides[s].kind == SideKind::wall;
   active_ = walls && !force_.zero();
@@ -14,7 +14,7 @@ void BodyForceSplit::at(std::size_t n, const double* x, const double* y, double 
   gy.resize(n);
   for (std::size_t a = 0; a < n; ++a) {
     double g[2];
-    force_.at(x[a], y ? y[a] : 0.0, t, g);
+    force_.walled_at(x[a], y ? y[a] : 0.0, t, g);
     gx[a] = g[0];
     gy[a] = g[1];
   }

@@ -21,7 +21,9 @@
 // and in the velocity correction; on the grid, each wall face carries the flux g . n. For the tank
 // at rest the PPE then has the exact solution P = rho g (H - y) + const on the lattice, and the
 // correction gives back u = u^n up to the lattice's error in the gradient of a linear field.
-// Nothing changes without a body force or without walls.
+// All of this concerns the components of g along axes bounded by walls, which a mean pressure
+// gradient can balance; a force along a periodic axis (a channel) is left in u* as before. Nothing
+// changes without a body force or without walls.
 #pragma once
 #include <vector>
 
@@ -37,7 +39,8 @@ class BodyForceSplit {
   // A body force and at least one wall: the split applies.
   bool active() const { return active_; }
   const BodyForceField& force() const { return force_; }
-  // g at n points (x, y) (y null in 1D) at time t.
+  // g at n points (x, y) (y null in 1D) at time t, its components along the walled axes only
+  // (BodyForceField::walled_at: along a periodic axis, as in a channel, g is left to u*).
   void at(std::size_t n, const double* x, const double* y, double t, std::vector<double>& gx,
           std::vector<double>& gy) const;
   // div g at the real particles of f, difference form over real neighbours and all ghosts with g at

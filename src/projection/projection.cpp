@@ -64,6 +64,8 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction != "none") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+  // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
+  slip_origin_ = split_.active() && scene.projection_points == "step" && scene.projection != "constrained";
   if (scene.projection == "constrained") {
     constrained_ = std::make_unique<ConstrainedPressure>(scene, rhs);
     RhsOptions o = rhs_.options();
@@ -109,6 +111,8 @@ void Projection::permute_particles(const std::vector<std::uint32_t>& from) {
 }
 
 void Projection::begin_step(double t, const double* y) {
+  // The stages of a step projected at its end carry (t - t_n) g (body_force_split.hpp).
+  rhs_.set_slip_origin(slip_origin_, t);
   t_prev_ = t;
   y_prev_.assign(y, y + rhs_.layout().size());
 }
@@ -158,6 +162,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
       if (v) v[a] -= dt * gy_[a];
     }
   }
+  rhs_.set_slip_origin(false, 0.0);  // the increment is out of u* below: plain images
   rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u* (less dt g)
   if (split_.active()) {
     std::copy(saved_u_.begin(), saved_u_.end(), u);

@@ -13,6 +13,11 @@ BodyForceField::BodyForceField(const std::vector<std::string>& expr, int dim) : 
   }
 }
 
+BodyForceField::BodyForceField(const std::vector<std::string>& expr, const Scene& scene)
+    : BodyForceField(expr, scene.dimension) {
+  for (int k = 0; k < 2; ++k) walled_[k] = k < scene.dimension && scene.sides[2 * k].kind == SideKind::wall;
+}
+
 void BodyForceField::at(double x, double y, double t, double g[2]) const {
   g[1] = 0.0;
   for (int k = 0; k < dim_; ++k) g[k] = constant_[k] ? value_[k] : expr_[k].eval(x, y, t);

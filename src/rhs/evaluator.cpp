@@ -99,7 +99,10 @@ void RhsEvaluator::initial_state(double* y) const {
     std::copy(particles_.init_pos[k].begin(), particles_.init_pos[k].end(), y + layout_.pos(k));
     std::copy(particles_.init_vel[k].begin(), particles_.init_vel[k].end(), y + layout_.vel(k));
   }
-  if (layout_.has_density) std::copy(particles_.rho0.begin(), particles_.rho0.begin() + n, y + layout_.rho());
+  if (layout_.has_density) {
+    const std::vector<double>& rho = particles_.init_rho.empty() ? particles_.rho0 : particles_.init_rho;
+    std::copy(rho.begin(), rho.begin() + static_cast<long>(n), y + layout_.rho());
+  }
   if (layout_.has_energy) std::fill(y + layout_.energy(), y + layout_.energy() + n, particles_.init_energy);
 }
 

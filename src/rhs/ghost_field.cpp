@@ -15,7 +15,7 @@ bool any_needs_ghost_gradients(const std::vector<std::unique_ptr<Term>>& terms) 
 GhostField::GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms)
     : depth_(ghost_depth(support_radius, any_needs_ghost_gradients(terms))),
       builder_(scene, depth_),
-      force_(scene.body_force, scene.dimension),
+      force_(scene.body_force, scene),
       hydrostatic_pressure_(scheme_traits(scene.scheme).weakly_compressible && !force_.zero()) {
   if (const auto make = wall_velocity_rules().at(scene.wall_velocity).make; make && scene.dimension == 2)
     wall_rule_ = make(scene, scene.spacing);
@@ -100,6 +100,22 @@ void GhostField::set_velocities(FluidFields& f) const {
     if (two_d) {
       f.v[i] = mv[1] * vs + mv[3];
       f.vd[i] = md[1] * vs + md[3];
+    }
+  }
+  if (slip_on_ && f.t != slip_t0_) {
+    for (std::size_t g = 0; g < set_.size(); ++g) {
+      const std::size_t i = n + g, s = set_.source[g];
+      const auto& mv = set_.map[g];
+      const auto& md = set_.div_map[g];
+      double acc[2];
+      force_.walled_at(f.x[s], two_d ? f.y[s] : 0.0, f.t, acc);
+      const double dx = (f.t - slip_t0_) * acc[0], dy = (f.t - slip_t0_) * acc[1];
+      f.u[i] += (1.0 - mv[0]) * dx;
+      f.ud[i] += (1.0 - md[0]) * dx;
+      if (two_d) {
+        f.v[i] += (1.0 - mv[1]) * dy;
+        f.vd[i] += (1.0 - md[1]) * dy;
+      }
     }
   }
   if (wall_rule_) wall_rule_->apply(set_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());

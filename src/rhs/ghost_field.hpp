@@ -37,6 +37,16 @@ class GhostField {
   void refresh(FluidFields& f, const std::vector<double>& mass, bool rebuild, double skin);
   // The ghosts' velocities (momentum and divergence copies) from the real particles' in f.
   void set_velocities(FluidFields& f) const;
+  // With `on`, the wall images of the momentum and divergence velocities take the body force's
+  // increment since t0 unreflected: u' = M(u - d) + d with d = (t - t0) g(r_src), M the image's map.
+  // The stages of a projection step carry d = (t - t0) g, which the projection removes at the end
+  // of the step; a mirror image u' = 2w - u would read it as slip at the wall (and the viscous term
+  // would brake it there), whereas u* of a pressure-correction step is w + dt grad(p)/rho at the
+  // wall (Kim & Moin 1985 §2), i.e. w + d where the pressure balances g. No effect without body force.
+  void set_slip_origin(bool on, double t0) {
+    slip_on_ = on && !force_.zero();
+    slip_t0_ = t0;
+  }
   // f.ghost_dp at f.t (cleared without body force).
   void set_hydrostatic_steps(FluidFields& f) const;
   // field[ghost] = field[its source] for a field of all points (sized to n_all).
@@ -52,7 +62,9 @@ class GhostField {
   std::size_t n_real_ = 0, n_all_ = 0;  // of the last refresh
   std::unique_ptr<WallVelocityRule> wall_rule_;
   BodyForceField force_;
-  bool hydrostatic_pressure_;  // WCSPH: ghost pressures take the hydrostatic step  // the scene's boundary.wall_velocity rule (none for "mirror")
+  bool hydrostatic_pressure_;  // WCSPH: ghost pressures take the hydrostatic step
+  bool slip_on_ = false;       // set_slip_origin
+  double slip_t0_ = 0;  // the scene's boundary.wall_velocity rule (none for "mirror")
 };
 
 }  // namespace arksph

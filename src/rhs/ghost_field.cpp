@@ -1,5 +1,7 @@
 #include "rhs/ghost_field.hpp"
 
+#include <cmath>
+
 #include "core/scheme.hpp"
 
 namespace arksph {
@@ -82,7 +84,10 @@ void GhostField::set_hydrostatic_steps(FluidFields& f) const {
     if (dx == 0.0 && dy == 0.0) continue;
     double acc[2];
     force_.at(f.x[s], two_d ? f.y[s] : 0.0, f.t, acc);
-    f.ghost_dp[i] = acc[0] * dx + acc[1] * dy;
+    const double dp = acc[0] * dx + acc[1] * dy;
+    // A force that is not finite at a source is that particle's failure, diagnosed there (its own
+    // acceleration): its wall points take no step rather than pass it on to their neighbours.
+    if (std::isfinite(dp)) f.ghost_dp[i] = dp;
   }
 }
 
@@ -109,6 +114,7 @@ void GhostField::set_velocities(FluidFields& f) const {
       const auto& md = set_.div_map[g];
       double acc[2];
       force_.walled_at(f.x[s], two_d ? f.y[s] : 0.0, f.t, acc);
+      if (!std::isfinite(acc[0]) || !std::isfinite(acc[1])) continue;  // diagnosed at the source
       const double dx = (f.t - slip_t0_) * acc[0], dy = (f.t - slip_t0_) * acc[1];
       f.u[i] += (1.0 - mv[0]) * dx;
       f.ud[i] += (1.0 - md[0]) * dx;

@@ -121,12 +121,13 @@ RunResult run_tank(const std::string& name, const std::string& sets) {
 }
 }  // namespace
 
-// One step of g dt = 0.01 from rest. Measured with the wall condition: deviation 0.3-0.5 %, speed
-// 6e-4 (the no-slip images of the viscous term see the increment g dt inside the step); without it
-// the pressure has a boundary layer (deviation ~2 %) and the speed at the walls is ~0.3 g dt.
+// One step of g dt = 0.01 from rest. Measured with the wall condition: pressure deviation 3.8e-4
+// (isph, every solver and level), 3.8e-5 (isph-gpps); max speed 8e-5 to 1.4e-4 (isph), 7e-16
+// (isph-gpps). Without it the wall rows move at a fair fraction of g dt and the pressure has a
+// boundary layer along each wall.
 TEST_CASE("hydrostatic tank: one projected step returns p = rho g (H - y) and leaves the fluid at rest") {
-  const double kDeviation = 0.01;   // r.m.s. relative pressure deviation: the lattice's error is ~0.4 %
-  const double kSpeed = 0.1 * 0.01;  // a tenth of g dt
+  const double kDeviation = 2e-3;    // r.m.s. relative pressure deviation: five times the measured
+  const double kSpeed = 0.03 * 0.01;  // 3 % of g dt: twice the measured
   for (const std::string solver : {"auto", "klu", "cg", "cg_ic", "cg_amg"})
     for (const std::string level : {"zero_mean", "zero_min"}) {
       const StepResult r = one_step({"method.ppe_solver=" + solver, "method.ppe_pressure_level=" + level});
@@ -134,26 +135,24 @@ TEST_CASE("hydrostatic tank: one projected step returns p = rho g (H - y) and le
       CHECK(r.deviation < kDeviation);
       CHECK(r.max_speed < kSpeed);
     }
-  const StepResult exact = one_step({"method.ppe_solver=klu", "method.ppe_operator=exact"});
-  MESSAGE("exact operator: max speed ", exact.max_speed);
-  CHECK(exact.max_speed < kSpeed);
   const StepResult grid = one_step({"method.scheme=isph-gpps"});
   MESSAGE("isph-gpps: pressure deviation ", grid.deviation, ", max speed ", grid.max_speed);
   CHECK(grid.deviation < kDeviation);
   CHECK(grid.max_speed < kSpeed);
 }
 
-// t = 1 (about one gravity-wave period sqrt(H/g)), dt = 0.002, outputs every 0.1: the largest speed
-// at any output against sqrt(g H) = 1. Measured with the wall condition: ISPH 4e-4 to 9e-4 (the
-// viscous splitting error at the no-slip walls, proportional to dt), GPPS ~1e-3, WCSPH with the
-// hydrostatic start ~1e-3. Without it ISPH fails (exit 3) or exceeds 0.03.
+// t = 1 (about one gravity-wave period sqrt(H/g)), dt = 0.002 (WCSPH 0.001), outputs every 0.1: the
+// largest speed at any output against sqrt(g H) = 1. Measured: isph 2.6e-5 (every solver),
+// constrained projection 7.3e-5 (with beta = 50: at the default relaxation the fluid slowly sinks,
+// growing ~4 /s), isph-gpps 5e-16, wcsph with the hydrostatic start 7.9e-4. Without the wall
+// condition isph ends in a blow-up (exit 3) before t = 0.5.
 TEST_CASE("hydrostatic tank: every scheme holds the tank at rest over t = 1") {
-  const double kBound = 3e-3;  // 3e-3 sqrt(gH): a few times the measured splitting error
+  const double kBound = 2e-3;  // 2e-3 sqrt(gH), the acceptance bound of cases/hydrostatic_tank at every output
   const std::vector<std::pair<std::string, std::string>> runs = {
       {"isph_auto", ""},
       {"isph_klu", "--set method.ppe_solver=klu"},
       {"isph_cg", "--set method.ppe_solver=cg"},
-      {"isph_constrained", "--set method.projection=constrained"},
+      {"isph_constrained", "--set method.projection=constrained --set method.constraint_relaxation=50"},
       {"isph_gpps", "--set method.scheme=isph-gpps"},
       {"wcsph", "--set method.scheme=wcsph --set initial.hydrostatic=true --set time.dt=0.001"},
   };

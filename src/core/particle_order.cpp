@@ -51,6 +51,7 @@ void permute(ParticleSet& ps, const Permutation& from) {
   permute(ps.rho0, from);
   permute(ps.id, from);
   permute(ps.phase, from);
+  if (!ps.init_rho.empty()) permute(ps.init_rho, from);
   for (int k = 0; k < 2; ++k) {
     permute(ps.init_pos[k], from);
     permute(ps.init_vel[k], from);

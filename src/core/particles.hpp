@@ -36,6 +36,7 @@ struct ParticleSet {
   std::vector<std::int64_t> id;   // stable identifier
   std::vector<std::int32_t> phase;
   std::vector<double> init_pos[2], init_vel[2];
+  std::vector<double> init_rho;   // density at t = 0 when not rho0 (initial.hydrostatic); empty: rho0
   double init_energy = 0;         // specific internal energy at t = 0 (ideal-gas equation of state)
 };
 

@@ -52,6 +52,7 @@ struct Scene {
   // [initial]
   std::vector<std::string> initial_velocity{"0", "0"};
   std::vector<std::string> initial_offset{"0", "0"};  // displacement added to the lattice positions
+  bool initial_hydrostatic = false;  // wcsph: start at the Tait density of the hydrostatic pressure
 
   // [[phase]]
   std::vector<PhaseSpec> phases;

@@ -12,6 +12,7 @@
 #include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/projection.hpp"
+#include "rhs/hydrostatic_start.hpp"
 #include "rhs/term_registry.hpp"
 
 namespace arksph {
@@ -119,7 +120,10 @@ std::vector<Group> general_keys() {
         expressions("initial.velocity", {"x", "y"}).unit("m/s")
             .doc("initial velocity u(x, y), one expression per dimension").to(&Scene::initial_velocity),
         expressions("initial.offset", {"x", "y"}).unit("m")
-            .doc("displacement of each lattice point (x, y) at t = 0").to(&Scene::initial_offset),
+            .doc("displacement of each lattice point (x, y) at t = 0").to(&Scene::initial_offset)},
+       ""},
+      {hydrostatic_start_params(), "wcsph"},
+      {{
         ParamBuilder("phase.where", Param::Type::text, std::string()).required().custom()
             .doc("[[phase]]: region of a further phase, an expression in x, y; non-zero selects; must select a particle"),
         ParamBuilder("phase.density", Param::Type::number, 1.0).required().custom().in(above(0))

@@ -29,6 +29,7 @@ double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
 
 ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
+      split_(scene),
       solver_key_(scene.ppe_solver),
       tolerance_(scene.ppe_tolerance),
       relaxation_(relaxation_rate(scene, rhs)),
@@ -60,7 +61,7 @@ ConstraintReport ConstrainedPressure::solve_pressure(const std::vector<double>& 
   return {rep.iterations, rep.relative_residual};
 }
 
-void ConstrainedPressure::pressure_gradient(const std::vector<double>& p) {
+void ConstrainedPressure::pressure_gradient(const std::vector<double>& p, bool with_steps) {
   const FluidFields& f = rhs_.fields();
   const std::size_t n = f.n_real;
   gx_.resize(n);
@@ -70,7 +71,8 @@ void ConstrainedPressure::pressure_gradient(const std::vector<double>& p) {
     const double pa = p[a] / (f.rho[a] * f.rho[a]);
     double sx = 0, sy = 0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double c = f.m[b] * (p[f.src[b]] / (f.rho[b] * f.rho[b]) + pa) * F;
+      const double pb = with_steps ? f.point_pressure(p, b) : p[f.src[b]];
+      const double c = f.m[b] * (pb / (f.rho[b] * f.rho[b]) + pa) * F;
       sx += c * rx;
       sy += c * ry;
     });
@@ -92,10 +94,21 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
     wx_[a] = ydot[L.vel(0) + a] + (au ? au[a] : 0.0) + relaxation_ * u[a];
     if (v) wy_[a] = ydot[L.vel(1) + a] + (av ? av[a] : 0.0) + relaxation_ * v[a];
   }
+  if (split_.active()) {  // D(a* - g) + div g, the flux of g as Neumann data
+    split_.at(n, f.x.data(), v ? f.y.data() : nullptr, f.t, bx_, by_);
+    for (std::size_t a = 0; a < n; ++a) {
+      wx_[a] -= bx_[a];
+      if (v) wy_[a] -= by_[a];
+    }
+  }
   div_.resize(n);
   divergence_minus_motion(f, wx_.data(), wy_.data(), u, v, div_.data());
+  if (split_.active()) {
+    const std::vector<double> dg = split_.divergence(f), flux = neumann_source(f);
+    for (std::size_t a = 0; a < n; ++a) div_[a] += dg[a] + flux[a];
+  }
   const ConstraintReport rep = solve_pressure(div_);
-  pressure_gradient(p_);
+  pressure_gradient(p_, true);
   for (std::size_t a = 0; a < n; ++a) {
     ydot[L.vel(0) + a] -= gx_[a];
     if (v) ydot[L.vel(1) + a] -= gy_[a];
@@ -114,7 +127,7 @@ ConstraintReport ConstrainedPressure::project_velocity(double t, double* y) {
   const std::vector<double> keep_p = p_, keep_solution = solution_;
   solution_.assign(n, 0.0);  // phi is a potential, not the pressure: the pressure's warm start kept apart
   const ConstraintReport rep = solve_pressure(div_);
-  pressure_gradient(p_);
+  pressure_gradient(p_, false);
   for (std::size_t a = 0; a < n; ++a) {
     u[a] -= gx_[a];
     if (v) v[a] -= gy_[a];

@@ -26,6 +26,11 @@
 // approximate projections, applied at every stage. p is a smooth function of the state (its level
 // fixed by method.ppe_pressure_level = "zero_mean"), so it converges at the velocity's order.
 //
+// Under a body force g with walls, the source takes D(a* - g) + div g and the flux of g is the
+// Neumann data of L and G (wall points at P_src + rho g . d; projection/body_force_split.hpp): D's
+// wall images reflect a*, which for a uniform g leaves a layer of sources along the walls that
+// C&R's mirrored P in G cannot balance.
+//
 // The exact orthogonal projection I - G (D G)^-1 D with G = -M^-1 D^T V (DivergenceOperator) is
 // idempotent, but D G decouples odd and even particles: on a perturbed lattice it has near-null
 // modes, and a constraint imposed through it moves the velocity by O(|u|) (docs/methods/isph.md).
@@ -34,6 +39,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "projection/body_force_split.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
@@ -66,16 +72,18 @@ class ConstrainedPressure {
   // p_ from L p = w_div (source w_div), at the fields of the last eval; returns the solver's report.
   ConstraintReport solve_pressure(const std::vector<double>& w_div);
   // (gx, gy) = G p_ (C&R eq. 11: sum_b m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab).
-  void pressure_gradient(const std::vector<double>& p);
+  // with_steps: wall points at P_src + rho ghost_dp (the pressure), or at P_src (a potential).
+  void pressure_gradient(const std::vector<double>& p, bool with_steps);
 
   RhsEvaluator& rhs_;
+  BodyForceSplit split_;
   std::string solver_key_;
   double tolerance_;
   double relaxation_;
   bool zero_min_level_;
   std::unique_ptr<PoissonSolver> solver_;
   PoissonSystem system_;
-  std::vector<double> p_, solution_, div_, gx_, gy_, wx_, wy_;
+  std::vector<double> p_, solution_, div_, gx_, gy_, wx_, wy_, bx_, by_;
 };
 
 }  // namespace arksph

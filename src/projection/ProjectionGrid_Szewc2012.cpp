@@ -41,7 +41,37 @@ GridSpec gpps_grid(const Scene& scene) {
 }
 
 GridProjection::GridProjection(const Scene& scene)
-    : poisson_(gpps_grid(scene)), fallback_density_(scene.density), volume_relaxation_(scene.gpps_volume_relaxation) {}
+    : poisson_(gpps_grid(scene)),
+      fallback_density_(scene.density),
+      volume_relaxation_(scene.gpps_volume_relaxation),
+      force_(scene.body_force, scene.dimension) {
+  bool walls = false;
+  for (int s = 0; s < 2 * scene.dimension; ++s) walls = walls || scene.sides[s].kind == SideKind::wall;
+  wall_flux_ = walls && !force_.zero();
+}
+
+void GridProjection::add_wall_flux(std::vector<double>& rhs, double t) const {
+  const GridSpec& g = poisson_.grid();
+  const bool two_d = g.ny > 1;
+  double acc[2];
+  // Along x: the faces x = x0 and x = x0 + nx h of every row (outer normals -x and +x).
+  if (!g.periodic[0])
+    for (int j = 0; j < g.ny; ++j) {
+      const double yc = g.y0 + (j + 0.5) * g.h;
+      force_.at(g.x0, yc, t, acc);
+      rhs[g.index(0, j)] -= -acc[0] / g.h;
+      force_.at(g.x0 + g.nx * g.h, yc, t, acc);
+      rhs[g.index(g.nx - 1, j)] -= acc[0] / g.h;
+    }
+  if (two_d && !g.periodic[1])
+    for (int i = 0; i < g.nx; ++i) {
+      const double xc = g.x0 + (i + 0.5) * g.h;
+      force_.at(xc, g.y0, t, acc);
+      rhs[g.index(i, 0)] -= -acc[1] / g.h;
+      force_.at(xc, g.y0 + g.ny * g.h, t, acc);
+      rhs[g.index(i, g.ny - 1)] -= acc[1] / g.h;
+    }
+}
 
 GridCorrection GridProjection::solve(const FluidFields& f, const std::vector<double>& divergence, double dt) {
   const GridSpec& g = poisson_.grid();
@@ -60,6 +90,7 @@ GridCorrection GridProjection::solve(const FluidFields& f, const std::vector<dou
     for (std::size_t i = 0; i < rhs.size(); ++i)
       rhs[i] -= volume_relaxation_ * (src.weight[i] / cell - 1.0) / (dt * dt);
   }
+  if (wall_flux_) add_wall_flux(rhs, f.t);
   GridCorrection c;
   c.refactorised = poisson_.set_density(rho.value);
   std::vector<double> p;

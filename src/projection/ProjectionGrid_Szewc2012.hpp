@@ -8,6 +8,9 @@
 // becomes div(u*)/dt - beta (phi_i - 1)/dt^2 with phi_i = sum_a w_ia V_a / h^d the particle volume
 // deposited in cell i, so that over-full cells expand and empty ones fill (the particle
 // clustering that the smooth grid correction does not resist otherwise).
+// Under a body force g the source comes from u* - dt g (projection.cpp) and each wall face carries
+// the flux (1/rho) dp/dn = g . n of the increment dt g instead (projection/body_force_split.hpp):
+// the grid pressure of a tank at rest is then rho g (H - y) + const and (1/rho) grad p = g exactly.
 // The density on the grid is the volume-weighted mean of the particles' phase densities, so for one
 // phase it is uniform and the matrix never changes.
 #pragma once
@@ -16,6 +19,7 @@
 
 #include "core/scene.hpp"
 #include "projection/grid_poisson.hpp"
+#include "rhs/body_force_field.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -45,6 +49,10 @@ class GridProjection {
   GridPoisson poisson_;
   double fallback_density_;
   double volume_relaxation_;
+  BodyForceField force_;
+  bool wall_flux_;  // a body force and a wall: the wall faces carry g . n
+  // rhs_i -= sum over the wall faces of cell i of (g . n_out) / h, g at the face centre at time t.
+  void add_wall_flux(std::vector<double>& rhs, double t) const;
 };
 
 }  // namespace arksph

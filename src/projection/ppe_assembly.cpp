@@ -32,6 +32,41 @@ inline double laplacian_coeff(const FluidFields& f, std::size_t a, std::uint32_t
 }
 }  // namespace
 
+std::vector<double> neumann_source(const FluidFields& f) {
+  std::vector<double> out(f.n_real, 0.0);
+  if (f.ghost_dp.empty()) return out;
+  const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    double s = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double r2, double, double F) {
+      if (f.ghost_dp[b] != 0.0) s += laplacian_coeff(f, a, b, r2, F, eta2) * f.rho[b] * f.ghost_dp[b];
+    });
+    out[a] = s;
+  }
+  return out;
+}
+
+std::vector<double> neumann_source_exact(const FluidFields& f) {
+  std::vector<double> out(f.n_real, 0.0);
+  if (f.ghost_dp.empty()) return out;
+  std::vector<double> gx(f.n_real, 0.0), gy(f.n_real, 0.0);
+  for (std::size_t a = 0; a < f.n_real; ++a)
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      if (f.ghost_dp[b] == 0.0) return;
+      const double c = f.m[b] / f.rho[b] * F * f.rho[b] * f.ghost_dp[b];
+      gx[a] += c * rx;
+      gy[a] += c * ry;
+    });
+  for (std::size_t a = 0; a < f.n_real; ++a)
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      if (f.is_wall_image(b)) return;
+      const std::uint32_t s = f.src[b];
+      out[a] -= f.m[b] / f.rho[b] * F * (gx[s] * rx + gy[s] * ry);
+    });
+  return out;
+}
+
 std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<double>& p) {
   const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
   std::vector<double> out(f.n_real, 0.0);

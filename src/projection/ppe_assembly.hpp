@@ -34,6 +34,16 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
 // The same into an existing system, reusing its storage (no page faults on the matrix each step).
 void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, PoissonSystem& sys);
 
+// The Neumann data of the wall points under a body force (FluidFields::ghost_dp): a wall point's
+// pressure is P_src + rho ghost_dp, so L(P)_a = s_a reads L0(P)_a = s_a + sum_b c_ab rho_b ghost_dp_b
+// with L0 the matrix of assemble_ppe (wall points carrying their source's P). Returns that sum per
+// real particle, to be added to div(u*)/dt (zeros without body force). Own mirror images count here
+// (their P differs from the source's by the step), though they drop out of L0.
+std::vector<double> neumann_source(const FluidFields& f);
+// The same for the exact operator D G (assemble_ppe_exact): -D(G_step), G_step the gradient of the
+// steps alone.
+std::vector<double> neumann_source_exact(const FluidFields& f);
+
 // The approximate Laplacian of C&R eq. 19 applied to a pressure field (real particles, ghosts
 // mirror their source): for tests and residual checks.
 std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<double>& p);

@@ -79,6 +79,7 @@ const std::vector<Param>& projection_time_params() {
 
 Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
     : rhs_(rhs),
+      split_(scene),
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
       tolerance_(scene.ppe_tolerance),
       centre_positions_(scene.centre_positions),
@@ -88,6 +89,8 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction != "none") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+  // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
+  slip_origin_ = split_.active() && scene.projection_points == "step" && scene.projection != "constrained";
   if (scene.projection == "constrained") {
     constrained_ = std::make_unique<ConstrainedPressure>(scene, rhs);
     RhsOptions o = rhs_.options();
@@ -133,6 +136,8 @@ void Projection::permute_particles(const std::vector<std::uint32_t>& from) {
 }
 
 void Projection::begin_step(double t, const double* y) {
+  // The stages of a step projected at its end carry (t - t_n) g (body_force_split.hpp).
+  rhs_.set_slip_origin(slip_origin_, t);
   t_prev_ = t;
   y_prev_.assign(y, y + rhs_.layout().size());
 }
@@ -173,11 +178,36 @@ void Projection::project(double t, double* y) {
 }
 
 void Projection::project_velocities(double dt, double t, double* y) {
-  rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u*
+  const StateLayout& L = rhs_.layout();
+  const std::size_t n = L.n;
+  double* u = y + L.vel(0);
+  double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+  if (split_.active()) {  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
+    split_.at(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, gx_, gy_);
+    saved_u_.assign(u, u + n);
+    if (v) saved_v_.assign(v, v + n);
+    for (std::size_t a = 0; a < n; ++a) {
+      u[a] -= dt * gx_[a];
+      if (v) v[a] -= dt * gy_[a];
+    }
+  }
+  rhs_.set_slip_origin(false, 0.0);  // the increment is out of u* below: plain images
+  rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u* (less dt g)
+  if (split_.active()) {
+    std::copy(saved_u_.begin(), saved_u_.end(), u);
+    if (v) std::copy(saved_v_.begin(), saved_v_.end(), v);
+  }
   const FluidFields& f = rhs_.fields();
   // 2.-3. Pressure Poisson equation and velocity correction, on the particles or on the grid.
   const auto ta = std::chrono::steady_clock::now();
-  const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  if (split_.active()) {
+    const std::vector<double> dg = split_.divergence(f);
+    // On the grid the flux of g enters at the wall faces (GridProjection), on the particles here.
+    const std::vector<double> flux = grid_ ? std::vector<double>(n, 0.0)
+                                     : exact_operator_ ? neumann_source_exact(f) : neumann_source(f);
+    for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
+  }
   if (!grid_) stats_.assembly_seconds += since(ta);
   if (grid_) {
     project_on_grid(f, div, dt, y);
@@ -220,7 +250,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
     const double pa = pressure_[a] / (f.rho[a] * f.rho[a]);
     double gx = 0, gy = 0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double pb = pressure_[f.src[b]] / (f.rho[b] * f.rho[b]);
+      const double pb = f.point_pressure(pressure_, b) / (f.rho[b] * f.rho[b]);
       const double c = f.m[b] * (pb + pa) * F;
       gx += c * rx;
       gy += c * ry;

@@ -3,7 +3,8 @@
 //   1. fields at the new positions r* (ghosts, neighbours) with the unconstrained velocity u*;
 //   2. the PPE L(P) = div(u*)/dt (eqs. 10, 17, 19; see ppe_assembly.hpp), solved by a registered solver;
 //   3. velocity correction u = u* - dt sum_b m_b (P_b/rho_b^2 + P_a/rho_a^2) grad_a W_ab (eq. 11),
-//      ghosts carrying their source's pressure;
+//      ghosts carrying their source's pressure (plus the hydrostatic step under a body force:
+//      body_force_split.hpp, where also the source and the PPE take the body force's wall flux);
 //   4. optionally, positions centred in time: r = r_n + dt (u + u_n)/2 (eq. 12).
 // With ARKSPH_FORWARD_EULER_1_1 this is C&R's scheme (eqs. 8-12), except that ARKODE evaluates the
 // viscous term at r_n where eq. 9 reads chi^n(r*): a difference of O(dt^2) per step.
@@ -19,6 +20,7 @@
 #include "projection/ConstrainedPressure.hpp"
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/ProjectionGrid_Szewc2012.hpp"
+#include "projection/body_force_split.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
@@ -74,6 +76,9 @@ class Projection {
   void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
 
   RhsEvaluator& rhs_;
+  BodyForceSplit split_;           // the body force's wall flux as Neumann data (body_force_split.hpp)
+  std::vector<double> gx_, gy_, saved_u_, saved_v_;
+  bool slip_origin_ = false;       // the stages' wall images take the increment (t - t_n) g
   std::unique_ptr<PoissonSolver> solver_;
   double tolerance_;
   bool centre_positions_;

@@ -102,7 +102,10 @@ void RhsEvaluator::initial_state(double* y) const {
     std::copy(particles_.init_pos[k].begin(), particles_.init_pos[k].end(), y + layout_.pos(k));
     std::copy(particles_.init_vel[k].begin(), particles_.init_vel[k].end(), y + layout_.vel(k));
   }
-  if (layout_.has_density) std::copy(particles_.rho0.begin(), particles_.rho0.begin() + n, y + layout_.rho());
+  if (layout_.has_density) {
+    const std::vector<double>& rho = particles_.init_rho.empty() ? particles_.rho0 : particles_.init_rho;
+    std::copy(rho.begin(), rho.begin() + static_cast<long>(n), y + layout_.rho());
+  }
   if (layout_.has_energy) std::fill(y + layout_.energy(), y + layout_.energy() + n, particles_.init_energy);
 }
 
@@ -224,14 +227,14 @@ void RhsEvaluator::sweep(std::size_t first, std::size_t last) {
 void RhsEvaluator::sum_stages(Partition part) {
   FluidFields& f = fields_;
   ghosts_.copy(f.rho);
-  ghosts_.copy(f.p);
+  ghosts_.copy_pressure(f);
   Term::Stage done = Term::Stage::density;
   for (std::size_t k = 0; k < terms_.size();) {
     const auto& term = terms_[k];
     if (term->stage() != done) {  // entering a later stage: ghosts take their sources' new values
       if (between_phases_) between_phases_();
       ghosts_.copy(f.rho);
-      ghosts_.copy(f.p);
+      ghosts_.copy_pressure(f);
       done = term->stage();
       if (done == Term::Stage::force) {
         f.vol.resize(f.n_all);
@@ -259,7 +262,7 @@ void RhsEvaluator::sum_stages(Partition part) {
     ++k;
   }
   ghosts_.copy(f.rho);
-  ghosts_.copy(f.p);
+  ghosts_.copy_pressure(f);
 }
 
 // ydot (if not null) from the derivatives of the real particles, in one pass over the particles:

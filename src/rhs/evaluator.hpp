@@ -49,6 +49,10 @@ class RhsEvaluator {
 
   const RhsOptions& options() const { return options_; }
   void set_options(const RhsOptions& options);
+  // Projection schemes under a body force: the stages of the step from t0 carry the increment
+  // (t - t0) g that the projection will take out; the wall images get it unreflected (GhostField::
+  // set_slip_origin). Off (on = false) for the projection's own field refresh and outside steps.
+  void set_slip_origin(bool on, double t0) { ghosts_.set_slip_origin(on, t0); }
   // Called between the phases of eval (ghosts, neighbour search, pairs, term stages); it may throw. The
   // set-up polls for a signal this way while the first evaluations of a large run take seconds;
   // empty (the default) during the time loop, where eval runs inside SUNDIALS callbacks.

@@ -35,6 +35,17 @@ struct FluidFields {
   bool is_wall_image(std::size_t i) const {
     return (!flip_x.empty() && flip_x[i] < 0) || (!flip_y.empty() && flip_y[i] < 0);
   }
+  // Under a body force g, the hydrostatic pressure step per unit density from each point's source
+  // to the point, g(r_src, t) . d with d the displacement across the walls only (a mirror image's
+  // reflected axes, a wall particle's normal; periodic shifts carry none): 0 for real particles.
+  // A wall point's pressure is p_src + rho_src ghost_dp (Adami et al. 2012 eq. 27 with resting
+  // walls), the Neumann condition dp/dn = rho g . n. Empty when the scene has no body force.
+  std::vector<double> ghost_dp;
+  // The pressure of point b from the real particles' pressures p (sized n_real): its source's,
+  // plus the hydrostatic step above.
+  double point_pressure(const std::vector<double>& p, std::size_t b) const {
+    return ghost_dp.empty() ? p[src[b]] : p[src[b]] + rho[b] * ghost_dp[b];
+  }
 
   // Kernel consistency correction (Basa et al. 2008 §4), filled by the kernel_correction term for
   // all points (ghosts take their source's values, reflected): see rhs/KernelCorrection_Basa2008.hpp.

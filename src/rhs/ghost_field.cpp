@@ -1,5 +1,9 @@
 #include "rhs/ghost_field.hpp"
 
+#include <cmath>
+
+#include "core/scheme.hpp"
+
 namespace arksph {
 
 namespace {
@@ -11,7 +15,10 @@ bool any_needs_ghost_gradients(const std::vector<std::unique_ptr<Term>>& terms) 
 }  // namespace
 
 GhostField::GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms)
-    : depth_(ghost_depth(support_radius, any_needs_ghost_gradients(terms))), builder_(scene, depth_) {
+    : depth_(ghost_depth(support_radius, any_needs_ghost_gradients(terms))),
+      builder_(scene, depth_),
+      force_(scene.body_force, scene),
+      hydrostatic_pressure_(scheme_traits(scene.scheme).weakly_compressible && !force_.zero()) {
   if (const auto make = wall_velocity_rules().at(scene.wall_velocity).make; make && scene.dimension == 2)
     wall_rule_ = make(scene, scene.spacing);
 }
@@ -57,6 +64,31 @@ void GhostField::refresh(FluidFields& f, const std::vector<double>& mass, bool r
     }
   }
   set_velocities(f);
+  set_hydrostatic_steps(f);
+}
+
+void GhostField::set_hydrostatic_steps(FluidFields& f) const {
+  if (force_.zero() || set_.size() == 0) {
+    f.ghost_dp.clear();
+    return;
+  }
+  const std::size_t n = f.n_real;
+  const bool two_d = f.dim == 2;
+  f.ghost_dp.assign(f.n_all, 0.0);
+  for (std::size_t g = 0; g < set_.size(); ++g) {
+    const std::size_t i = n + g, s = set_.source[g];
+    const auto& pl = set_.place[g];
+    // Displacement across the walls: along an axis that the position map does not just shift.
+    const double dx = pl[0] != 1.0 ? f.x[i] - f.x[s] : 0.0;
+    const double dy = two_d && pl[1] != 1.0 ? f.y[i] - f.y[s] : 0.0;
+    if (dx == 0.0 && dy == 0.0) continue;
+    double acc[2];
+    force_.at(f.x[s], two_d ? f.y[s] : 0.0, f.t, acc);
+    const double dp = acc[0] * dx + acc[1] * dy;
+    // A force that is not finite at a source is that particle's failure, diagnosed there (its own
+    // acceleration): its wall points take no step rather than pass it on to their neighbours.
+    if (std::isfinite(dp)) f.ghost_dp[i] = dp;
+  }
 }
 
 // Ghost velocities from their sources' (affine maps), then the wall-velocity extrapolations.
@@ -75,12 +107,35 @@ void GhostField::set_velocities(FluidFields& f) const {
       f.vd[i] = md[1] * vs + md[3];
     }
   }
+  if (slip_on_ && f.t != slip_t0_) {
+    for (std::size_t g = 0; g < set_.size(); ++g) {
+      const std::size_t i = n + g, s = set_.source[g];
+      const auto& mv = set_.map[g];
+      const auto& md = set_.div_map[g];
+      double acc[2];
+      force_.walled_at(f.x[s], two_d ? f.y[s] : 0.0, f.t, acc);
+      if (!std::isfinite(acc[0]) || !std::isfinite(acc[1])) continue;  // diagnosed at the source
+      const double dx = (f.t - slip_t0_) * acc[0], dy = (f.t - slip_t0_) * acc[1];
+      f.u[i] += (1.0 - mv[0]) * dx;
+      f.ud[i] += (1.0 - md[0]) * dx;
+      if (two_d) {
+        f.v[i] += (1.0 - mv[1]) * dy;
+        f.vd[i] += (1.0 - md[1]) * dy;
+      }
+    }
+  }
   if (wall_rule_) wall_rule_->apply(set_, n, f.x.data(), f.y.data(), f.u.data(), f.v.data());
 }
 
 void GhostField::copy(std::vector<double>& field) const {
   field.resize(n_all_);
   for (std::size_t g = 0; g < set_.size(); ++g) field[n_real_ + g] = field[set_.source[g]];
+}
+
+void GhostField::copy_pressure(FluidFields& f) const {
+  copy(f.p);
+  if (!hydrostatic_pressure_ || f.ghost_dp.empty()) return;
+  for (std::size_t i = n_real_; i < n_all_; ++i) f.p[i] += f.rho[i] * f.ghost_dp[i];
 }
 
 }  // namespace arksph

@@ -1,0 +1,38 @@
+#include "projection/body_force_split.hpp"
+
+namespace arksph {
+
+BodyForceSplit::BodyForceSplit(const Scene& scene) : force_(scene.body_force, scene) {
+  bool walls = false;
+  for (int s = 0; s < 2 * scene.dimension; ++s) walls = walls || scene.sides[s].kind == SideKind::wall;
+  active_ = walls && !force_.zero();
+}
+
+void BodyForceSplit::at(std::size_t n, const double* x, const double* y, double t, std::vector<double>& gx,
+                        std::vector<double>& gy) const {
+  gx.resize(n);
+  gy.resize(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    double g[2];
+    force_.walled_at(x[a], y ? y[a] : 0.0, t, g);
+    gx[a] = g[0];
+    gy[a] = g[1];
+  }
+}
+
+std::vector<double> BodyForceSplit::divergence(const FluidFields& f) const {
+  std::vector<double> div(f.n_real, 0.0);
+  if (force_.uniform()) return div;
+  std::vector<double> gx, gy;
+  at(f.n_all, f.x.data(), f.dim == 2 ? f.y.data() : nullptr, f.t, gx, gy);
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    double s = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      s += f.m[b] / f.rho[b] * F * ((gx[b] - gx[a]) * rx + (gy[b] - gy[a]) * ry);
+    });
+    div[a] = s;  // sum_b V_b (g_b - g_a) . grad_a W_ab: c for g = (c x, 0)
+  }
+  return div;
+}
+
+}  // namespace arksph

@@ -10,7 +10,9 @@
 // that Laplacian it keeps a particle's coupling to its own mirror image, which is what moves a
 // particle pressed against a wall. Each iteration solves K p = -(s - mean s) with a few matrix-free BiCGSTAB
 // iterations (truncated Krylov: the odd-even modes in which K is nearly singular are not amplified),
-// and clips each particle's shift at a tenth of the spacing.
+// and clips each particle's shift at a tenth of the spacing. A step is kept only if it lowers the
+// r.m.s. density error (halved up to twice otherwise; if none of these helps, the positions are left
+// as they were and the iteration stops), so that the correction never makes the density worse.
 #pragma once
 #include <vector>
 
@@ -30,6 +32,7 @@ void density_change(const FluidFields& f, const std::vector<double>& dx, const s
 
 struct NewtonCorrectionResult {
   int iterations = 0;        // Newton steps taken
+  int rejected = 0;          // steps given up because no fraction of them lowered the error
   long krylov_iterations = 0;
   double error = 0;          // r.m.s. of s about its mean after the last step
 };

@@ -10,6 +10,12 @@
 // twice as deep (needs_ghost_velocity_gradients; boundary/ghosts.hpp ghost_depth, Basa §5.2).
 // Reflected ghosts get their own first pass over the points within R (a cell search); periodic
 // images copy their source's stress.
+//
+// The SPH gradient of a row sawtooth u = (-1)^j on a lattice is zero (grad W is odd), so the nested
+// form does not damp it. Mirrored wall velocities continue the sawtooth into the ghosts, so the
+// walls do not damp it either: with boundary.wall_velocity = "mirror" the even and odd rows next to
+// a wall drift apart on a start-up (tests/physics/test_two_pass_ghosts.cpp); the extrapolating
+// rules (linear, quadratic; Basa §6.1.2) tie the ghosts to the first row and avoid it.
 #include <cmath>
 
 #include "kernels/kernel.hpp"

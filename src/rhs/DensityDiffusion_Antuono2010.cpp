@@ -5,7 +5,10 @@
 // g the hydrostatic part of the density difference is left out (Fourtakas et al. 2019, linearised
 // equation of state, p_H = rho0 g . r + const): rho_b - rho_a becomes
 //   rho_b - rho_a + rho0_a (g . r_ab) / c^2,   r_ab = r_a - r_b,
-// so that a fluid at rest in hydrostatic balance has no diffusive flux.
+// so that a fluid at rest in hydrostatic balance has no diffusive flux. Only the components of g
+// along axes bounded by walls count (along a periodic axis there is no hydrostatic balance). A wall
+// image carries its source's density, so for it r_ab is taken from its source: the image's density
+// is the source's hydrostatic one, not that of the image's own depth.
 #include "core/expression.hpp"
 #include "core/param_builder.hpp"
 #include "rhs/particle_term.hpp"
@@ -26,10 +29,22 @@ class DensityDiffusion final : public ParticleTerm<DensityDiffusion> {
     const double rho_a = f.rho[a], rho0 = f.rho0[a];
     const double hx = rho0 * hx_, hy = f.dim == 2 ? rho0 * hy_ : 0.0;
     double sum = 0;
-    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double dynamic = f.rho[b] - rho_a + (hx * rx + hy * ry);
-      sum -= F * f.vol[b] * dynamic;
-    });
+    if (hx == 0.0 && hy == 0.0) {
+      nb.for_pairs([&](std::uint32_t b, double, double, double, double, double F) {
+        sum -= F * f.vol[b] * (f.rho[b] - rho_a);
+      });
+    } else {
+      const double xa = f.x[a], ya = f.dim == 2 ? f.y[a] : 0.0;
+      nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double, double F) {
+        if (f.is_wall_image(b)) {
+          const std::uint32_t s = f.src[b];
+          rx = xa - f.x[s];
+          ry = f.dim == 2 ? ya - f.y[s] : 0.0;
+        }
+        const double dynamic = f.rho[b] - rho_a + (hx * rx + hy * ry);
+        sum -= F * f.vol[b] * dynamic;
+      });
+    }
     f.drhodt[a] += coeff_ * sum;
   }
 
@@ -43,9 +58,10 @@ class DensityDiffusion final : public ParticleTerm<DensityDiffusion> {
 std::unique_ptr<Term> make_density_diffusion(const Scene& s, double sound_speed) {
   const double h = s.h_over_dx * s.spacing;
   double g[2] = {0, 0};
-  for (int k = 0; k < s.dimension; ++k) {  // a constant body force only: otherwise no hydrostatic part
+  for (int k = 0; k < s.dimension; ++k) {  // a constant body force along a walled axis only
     Expression e(s.body_force.at(k), {"x", "y", "t"});
-    if (e.is_constant()) g[k] = e.eval(0, 0, 0);
+    const bool walled = s.sides[2 * k].kind == SideKind::wall || s.sides[2 * k + 1].kind == SideKind::wall;
+    if (e.is_constant() && walled) g[k] = e.eval(0, 0, 0);
   }
   return std::make_unique<DensityDiffusion>(part_param<double>(s, "method.delta_sph_coefficient"), h, sound_speed,
                                             g[0], g[1]);

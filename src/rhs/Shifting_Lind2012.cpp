@@ -1,7 +1,10 @@
 // Fickian particle shifting (Xu, Stansby & Laurence 2009; Lind et al. 2012 eqs. 8-10), written as a
 // velocity of the ODE instead of a displacement after each step:
 //   dr_a/dt = u_a + du_a,   du_a = -A h U grad C_a,
-//   grad C_a = sum_b V_b (1 + R (W_ab / W(dx))^n) grad_a W_ab      (Lind eq. 10, R = 0.2, n = 4),
+//   grad C_a = sum_b V0 (1 + R (W_ab / W(dx))^n) grad_a W_ab      (Lind eq. 10, R = 0.2, n = 4),
+// with the lattice volume V0 = dx^d of every particle (phases differ in mass, not in number density):
+// C measures where the particles are, not the density, so a fluid compressed by its weight (WCSPH
+// under gravity) is not shifted.
 // with the step-size-free diffusion coefficient D / dt = A h U (Skillen et al. 2013 write D = A h |u| dt;
 // U here is the scene's reference speed, so that particles near stagnation points are shifted too).
 // Where grad C is large (a lid corner, a particle pushed into a wall) the velocity saturates smoothly
@@ -28,8 +31,8 @@ constexpr int kAntiClumpN = 4;
 
 class Shifting final : public ParticleTerm<Shifting> {
  public:
-  Shifting(double coefficient, double speed, double limit, double h, double w_dx, bool density)
-      : scale_(coefficient * h * speed),
+  Shifting(double coefficient, double speed, double limit, double h, double w_dx, double v0, bool density)
+      : scale_(coefficient * h * speed * v0),
         inv_limit2_(limit > 0 && speed > 0 ? 1.0 / (limit * speed * limit * speed) : 0.0),  // U = 0: du = 0
         inv_w_dx_(1.0 / w_dx),
         density_(density) {}
@@ -48,8 +51,8 @@ class Shifting final : public ParticleTerm<Shifting> {
       const double q2 = q * q;
       const double clump = 1.0 + kAntiClumpR * q2 * q2;  // n = 4
       const double gx = F * rx, gy = F * ry;             // grad_a W_ab
-      cx += vb * clump * gx;
-      cy += vb * clump * gy;
+      cx += clump * gx;                                  // times V0 in scale_
+      cy += clump * gy;
       const double du = vb * (f.u[b] - ua), dv = two_d ? vb * (f.v[b] - va) : 0.0;
       uxx += du * gx;
       uxy += du * gy;
@@ -77,7 +80,7 @@ class Shifting final : public ParticleTerm<Shifting> {
   }
 
  private:
-  double scale_;      // A h U
+  double scale_;      // A h U V0
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
   double inv_w_dx_;   // 1 / W(dx)
   bool density_;      // the density is a state (continuity equation): carried too
@@ -98,7 +101,7 @@ Part<TermFactory> regularisation_shifting() {
             const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
             return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed,
                                               part_param<double>(s, "method.shifting_limit"), h,
-                                              kernel.W(s.spacing), density);
+                                              kernel.W(s.spacing), std::pow(s.spacing, s.dimension), density);
           },
           {number("method.shifting_coefficient", 8.0).in(at_least(0))
                .doc("A of the shifting velocity du = -A h U grad C (Lind et al. 2012 eq. 8 with D = A h U dt)"),

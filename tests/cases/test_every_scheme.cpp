@@ -58,6 +58,8 @@ const std::vector<std::string> kScenes = {
     "cases/rayleigh_taylor/scene.toml",    "cases/rayleigh_taylor/scene_cr1999.toml",
     "cases/robustness_map/scene.toml",     "cases/spin_down/periodic/scene.toml",
     "cases/spin_down/scene.toml",          "cases/sweeps/taylor_green_small.toml",
+    "cases/spin_down/defaults.toml",       "cases/taylor_green/scene.toml",
+    "cases/hydrostatic_tank/scene.toml",
 };
 
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
@@ -171,6 +173,9 @@ TEST_CASE(CASE_TEST("robustness_map")) { check_case("cases/robustness_map/scene.
 TEST_CASE(CASE_TEST("spin_down")) {
   check_case("cases/spin_down/scene.toml", {{"wcsph", "simulation failed", 3, true}});
 }
+TEST_CASE(CASE_TEST("spin_down defaults")) { check_case("cases/spin_down/defaults.toml"); }
+TEST_CASE(CASE_TEST("taylor_green")) { check_case("cases/taylor_green/scene.toml"); }
+TEST_CASE(CASE_TEST("hydrostatic_tank")) { check_case("cases/hydrostatic_tank/scene.toml"); }
 TEST_CASE(CASE_TEST("spin_down periodic")) { check_case("cases/spin_down/periodic/scene.toml"); }
 // The case is the constrained projection, which solves the Poisson equation on the particles.
 TEST_CASE(CASE_TEST("isph_order taylor_green_re100")) {

@@ -43,6 +43,8 @@ scheme = "wcsph"
 kernel = "quintic_spline"
 h_over_dx = 1.0
 sound_speed = 10
+regularisation = "none"     # the shifting's carried-velocity term is linear in u too, outside the viscous split
+density_diffusion = "none"
 [time]
 end = 0.1
 )toml";

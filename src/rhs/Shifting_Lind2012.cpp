@@ -1,7 +1,8 @@
 // Fickian particle shifting (Xu, Stansby & Laurence 2009; Lind et al. 2012 eqs. 8-10), written as a
 // velocity of the ODE instead of a displacement after each step:
 //   dr_a/dt = u_a + du_a,   du_a = -A h U grad C_a,
-//   grad C_a = sum_b V0 (1 + R (W_ab / W(dx))^n) grad_a W_ab      (Lind eq. 10, R = 0.2, n = 4),
+//   grad C_a = sum_b V0 (1 + R (W_ab / W(dx))^n) grad_a W_ab      (Lind eq. 10, n = 4,
+//                                                                   R = method.shifting_anti_clumping),
 // with the lattice volume V0 = dx^d of every particle (phases differ in mass, not in number density):
 // C measures where the particles are, not the density, so a fluid compressed by its weight (WCSPH
 // under gravity) is not shifted.
@@ -26,18 +27,20 @@
 namespace arksph {
 namespace {
 
-constexpr double kAntiClumpR = 0.2;  // Lind et al. 2012 eq. 10
-constexpr int kAntiClumpN = 4;
+constexpr int kAntiClumpN = 4;  // Lind et al. 2012 eq. 10
 
 class Shifting final : public ParticleTerm<Shifting> {
  public:
-  Shifting(double coefficient, double speed, double limit, double h, double w_dx, double v0, bool density)
+  Shifting(double coefficient, double speed, double limit, double h, double w_dx, double v0, double anti_clump,
+           bool density)
       : scale_(coefficient * h * speed * v0),
+        anti_clump_(anti_clump),
         inv_limit2_(limit > 0 && speed > 0 ? 1.0 / (limit * speed * limit * speed) : 0.0),  // U = 0: du = 0
         inv_w_dx_(1.0 / w_dx),
         density_(density) {}
   std::string name() const override { return "regularisation:shifting"; }
   bool moves_particles() const override { return true; }
+  bool reads_kernel_value() const override { return anti_clump_ != 0.0; }
   template <class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const bool two_d = f.dim == 2;
@@ -47,9 +50,12 @@ class Shifting final : public ParticleTerm<Shifting> {
     double rx_sum = 0, ry_sum = 0;          // grad rho
     nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double w, double F) {
       const double vb = f.vol[b];
-      const double q = w * inv_w_dx_;
-      const double q2 = q * q;
-      const double clump = 1.0 + kAntiClumpR * q2 * q2;  // n = 4
+      double clump = 1.0;
+      if (anti_clump_ != 0.0) {
+        const double q = w * inv_w_dx_;
+        const double q2 = q * q;
+        clump += anti_clump_ * q2 * q2;  // n = 4
+      }
       const double gx = F * rx, gy = F * ry;             // grad_a W_ab
       cx += clump * gx;                                  // times V0 in scale_
       cy += clump * gy;
@@ -81,6 +87,7 @@ class Shifting final : public ParticleTerm<Shifting> {
 
  private:
   double scale_;      // A h U V0
+  double anti_clump_; // R
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
   double inv_w_dx_;   // 1 / W(dx)
   bool density_;      // the density is a state (continuity equation): carried too
@@ -101,10 +108,13 @@ Part<TermFactory> regularisation_shifting() {
             const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
             return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed,
                                               part_param<double>(s, "method.shifting_limit"), h,
-                                              kernel.W(s.spacing), std::pow(s.spacing, s.dimension), density);
+                                              kernel.W(s.spacing), std::pow(s.spacing, s.dimension),
+                                              part_param<double>(s, "method.shifting_anti_clumping"), density);
           },
           {number("method.shifting_coefficient", 8.0).in(at_least(0))
                .doc("A of the shifting velocity du = -A h U grad C (Lind et al. 2012 eq. 8 with D = A h U dt)"),
+           number("method.shifting_anti_clumping", 0.2).in(at_least(0))
+               .doc("R of Lind et al. 2012 eq. 10: near neighbours weigh 1 + R (W/W(dx))^4 in grad C (0: plain grad C, no kernel values needed)"),
            number("method.shifting_limit", 0.2).in(at_least(0))
                .doc("s: the shifting velocity saturates smoothly at s U (0: no limit)"),
            number("method.shifting_speed", 0.0).in(at_least(0)).unit("m/s")

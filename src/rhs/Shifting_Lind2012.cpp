@@ -7,7 +7,8 @@
 // C measures where the particles are, not the density, so a fluid compressed by its weight (WCSPH
 // under gravity) is not shifted.
 // with the step-size-free diffusion coefficient D / dt = A h U (Skillen et al. 2013 write D = A h |u| dt;
-// U here is the scene's reference speed, so that particles near stagnation points are shifted too).
+// U here is the scene's flow speed, the largest initial or wall speed, so that particles near stagnation
+// points are shifted too; a fluid that starts at rest between resting walls has U = 0 and no shift).
 // Where grad C is large (a lid corner, a particle pushed into a wall) the velocity saturates smoothly
 // at s U, du <- du / sqrt(1 + |du|^2 / (s U)^2) with s = method.shifting_limit (Lind et al. 2012 limit
 // the displacement per step in the same spirit); on a nearly regular lattice |du| << s U and the
@@ -104,7 +105,7 @@ Part<TermFactory> regularisation_shifting() {
             const double h = s.h_over_dx * s.spacing;
             const Kernel kernel = make_kernel(s.kernel, h, s.dimension);
             double speed = part_param<double>(s, "method.shifting_speed");
-            if (speed <= 0) speed = reference_speed(s);
+            if (speed <= 0) speed = flow_speed(s);
             const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
             return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed,
                                               part_param<double>(s, "method.shifting_limit"), h,
@@ -118,7 +119,7 @@ Part<TermFactory> regularisation_shifting() {
            number("method.shifting_limit", 0.2).in(at_least(0))
                .doc("s: the shifting velocity saturates smoothly at s U (0: no limit)"),
            number("method.shifting_speed", 0.0).in(at_least(0)).unit("m/s")
-               .doc("U of the shifting velocity (0: the reference speed, the largest initial, wall or sqrt(|g| L) speed)")}};
+               .doc("U of the shifting velocity (0: the flow speed, the largest initial or wall speed)")}};
 }
 
 }  // namespace arksph

@@ -1,7 +1,8 @@
 // Transport velocity of Adami, Hu & Adams 2013, as a velocity of the ODE: the particles move with
 // the transport velocity u~ = u + du (eq. 13 integrated over one step is du = -(dt p_b / rho_a)
 // sum_b (V_a^2 + V_b^2)/V_a grad_a W_ab with the background pressure p_b; here the step-size-free
-// coefficient dt p_b / rho = A h U, scaled as the shifting velocity so that A means the same):
+// coefficient dt p_b / rho = A h U with the flow speed U, scaled as the shifting velocity so that A means
+// the same):
 //   du_a = -A h U sum_b (V_a^2 + V_b^2) / (2 V_a) grad_a W_ab,
 // and the momentum equation gains the divergence of the extra stress A = rho u (u~ - u) (eq. 8):
 //   du_a/dt += 1/m_a sum_b (V_a^2 + V_b^2) (A_a + A_b)/2 . grad_a W_ab,   (A . g)_i = rho u_i (du . g).
@@ -84,7 +85,7 @@ Part<TermFactory> regularisation_transport_velocity() {
           [](const Scene& s) -> std::unique_ptr<Term> {
             const double h = s.h_over_dx * s.spacing;
             double speed = part_param<double>(s, "method.transport_speed");
-            if (speed <= 0) speed = reference_speed(s);
+            if (speed <= 0) speed = flow_speed(s);
             const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
             return std::make_unique<TransportVelocity>(part_param<double>(s, "method.transport_coefficient") * h * speed,
                                                        density);
@@ -93,7 +94,7 @@ Part<TermFactory> regularisation_transport_velocity() {
                .doc("A of the background-pressure velocity du = -A h U sum_b (V_a^2 + V_b^2)/(2 V_a) grad W "
                     "(Adami et al. 2013 eq. 13 with dt p_b / rho = A h U)"),
            number("method.transport_speed", 0.0).in(at_least(0)).unit("m/s")
-               .doc("U of the transport velocity (0: the reference speed, the largest initial, wall or sqrt(|g| L) speed)")}};
+               .doc("U of the transport velocity (0: the flow speed, the largest initial or wall speed)")}};
 }
 
 }  // namespace arksph

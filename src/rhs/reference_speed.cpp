@@ -7,21 +7,14 @@
 
 namespace arksph {
 
-double reference_speed(const Scene& scene, double max_initial_speed) {
-  double u_ref = max_initial_speed;
+namespace {
+double largest_wall_speed(const Scene& scene, double u_ref) {
   for (int s = 0; s < 2 * scene.dimension; ++s)
     u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
-  double length = 0, force = 0;
-  for (int k = 0; k < scene.dimension; ++k) {
-    length = std::max(length, scene.max[k] - scene.min[k]);
-    Expression e(scene.body_force.at(k), {"x", "y", "t"});
-    force = std::max(force, std::abs(e.eval(0.5 * (scene.min[0] + scene.max[0]),
-                                            0.5 * (scene.min[1] + scene.max[1]), 0.0)));
-  }
-  return std::max(u_ref, std::sqrt(force * length));
+  return u_ref;
 }
 
-double reference_speed(const Scene& scene) {
+double largest_initial_speed(const Scene& scene) {
   const bool two_d = scene.dimension == 2;
   Expression eu(scene.initial_velocity.at(0), {"x", "y"});
   Expression ev(two_d ? scene.initial_velocity.at(1) : std::string("0"), {"x", "y"});
@@ -34,7 +27,24 @@ double reference_speed(const Scene& scene) {
       const double x = scene.min[0] + (i + 0.5) * dx, y = two_d ? scene.min[1] + (j + 0.5) * dx : 0.0;
       u_max = std::max(u_max, std::hypot(eu.eval(x, y), ev.eval(x, y)));
     }
-  return reference_speed(scene, u_max);
+  return u_max;
 }
+}  // namespace
+
+double flow_speed(const Scene& scene) { return largest_wall_speed(scene, largest_initial_speed(scene)); }
+
+double reference_speed(const Scene& scene, double max_initial_speed) {
+  const double u_ref = largest_wall_speed(scene, max_initial_speed);
+  double length = 0, force = 0;
+  for (int k = 0; k < scene.dimension; ++k) {
+    length = std::max(length, scene.max[k] - scene.min[k]);
+    Expression e(scene.body_force.at(k), {"x", "y", "t"});
+    force = std::max(force, std::abs(e.eval(0.5 * (scene.min[0] + scene.max[0]),
+                                            0.5 * (scene.min[1] + scene.max[1]), 0.0)));
+  }
+  return std::max(u_ref, std::sqrt(force * length));
+}
+
+double reference_speed(const Scene& scene) { return reference_speed(scene, largest_initial_speed(scene)); }
 
 }  // namespace arksph

@@ -214,7 +214,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("metrics", metrics);
   Json params = Json::object();
   params.set("h", model_.h).set("sound_speed", model_.sound_speed);
-  if (model_.reference_speed > 0) params.set("reference_speed", model_.reference_speed);
+  if (model_.reference_speed > 0) params.set("flow_speed", model_.reference_speed);
   j.set("derived", params);
   Json automatic = Json::object();  // the keys given as "auto" and the values their rules chose
   for (const auto& [key, value] : scene_.automatic) automatic.set(key, value);

@@ -68,7 +68,7 @@ Model build_model(const Scene& scene) {
     model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));
   auto terms = terms_from_scene(scene, model.sound_speed);
   for (const auto& t : terms)
-    if (t->moves_particles()) model.reference_speed = reference_speed(scene);
+    if (t->moves_particles()) model.reference_speed = flow_speed(scene);
   for (const auto& t : terms) model.terms.push_back(t->name());
   bool walls = false, periodic = false;
   for (int s = 0; s < 2 * scene.dimension; ++s) {

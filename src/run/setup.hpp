@@ -16,7 +16,7 @@ struct Model {
   ParticleSet particles;
   double h = 0;            // smoothing length
   double sound_speed = 0;  // wcsph only
-  double reference_speed = 0;  // U of the regularisation velocities (rhs/reference_speed.hpp); 0 without
+  double reference_speed = 0;  // U of the regularisation velocities: the flow speed (rhs/reference_speed.hpp); 0 without
   std::unique_ptr<RhsEvaluator> rhs;
   std::unique_ptr<Projection> projection;  // isph only
   std::vector<std::string> terms;  // everything constructed: RHS terms, boundaries, integrator

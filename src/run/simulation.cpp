@@ -66,7 +66,7 @@ void print_run_header(const Scene& scene, const Model& model) {
     std::printf("\n");
   }
   if (model.sound_speed > 0) std::printf("  sound speed %.6g\n", model.sound_speed);
-  if (model.reference_speed > 0) std::printf("  reference speed U %.6g (regularisation)\n", model.reference_speed);
+  if (model.reference_speed > 0) std::printf("  flow speed U %.6g (scale of the regularisation velocity)\n", model.reference_speed);
   if (model.projection && model.projection->constrained())
     std::printf("  constrained projection, divergence relaxation rate %.6g\n", model.projection->constraint()->relaxation());
   const std::string method = scene.imex ? "ARKStep IMEX " + scene.imex_pair + " (viscosity implicit)" : scene.integrator;

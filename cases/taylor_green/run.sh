@@ -25,9 +25,9 @@ for re in 100 1000; do
         "$bin" run "$here/scene.toml" --out "$out" --overwrite --quiet --set output.every=1 \
           --set method.scheme=$scheme --set fluid.viscosity=$nu --set fluid.spacing=$dx \
           --set "metrics.exact_velocity=$exact" --set time.end=2 $off || code=$?
-        python3 "$here/summarise.py" "$out" "$scheme" "$reg" "$re" "$n" "$code" >> "$csv"
+        ${PYTHON:-/usr/bin/python3} "$here/summarise.py" "$out" "$scheme" "$reg" "$re" "$n" "$code" >> "$csv"
       done
     done
   done
 done
-python3 "$here/plot.py" "$csv" "$here/taylor_green.png"
+${PYTHON:-/usr/bin/python3} "$here/plot.py" "$csv" "$here/taylor_green.png"

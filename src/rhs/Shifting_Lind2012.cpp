@@ -112,7 +112,7 @@ Part<TermFactory> regularisation_shifting() {
                                               kernel.W(s.spacing), std::pow(s.spacing, s.dimension),
                                               part_param<double>(s, "method.shifting_anti_clumping"), density);
           },
-          {number("method.shifting_coefficient", 8.0).in(at_least(0))
+          {number("method.shifting_coefficient", 12.0).in(at_least(0))
                .doc("A of the shifting velocity du = -A h U grad C (Lind et al. 2012 eq. 8 with D = A h U dt)"),
            number("method.shifting_anti_clumping", 0.2).in(at_least(0))
                .doc("R of Lind et al. 2012 eq. 10: near neighbours weigh 1 + R (W/W(dx))^4 in grad C (0: plain grad C, no kernel values needed)"),

@@ -59,7 +59,7 @@ const std::vector<std::string> kScenes = {
     "cases/robustness_map/scene.toml",     "cases/spin_down/periodic/scene.toml",
     "cases/spin_down/scene.toml",          "cases/sweeps/taylor_green_small.toml",
     "cases/spin_down/defaults.toml",       "cases/taylor_green/scene.toml",
-    "cases/hydrostatic_tank/scene.toml",
+    "cases/hydrostatic_tank/scene.toml",   "cases/cavity_re10000/scene.toml",
 };
 
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
@@ -175,6 +175,7 @@ TEST_CASE(CASE_TEST("spin_down")) {
 }
 TEST_CASE(CASE_TEST("spin_down defaults")) { check_case("cases/spin_down/defaults.toml"); }
 TEST_CASE(CASE_TEST("taylor_green")) { check_case("cases/taylor_green/scene.toml"); }
+TEST_CASE(CASE_TEST("cavity_re10000")) { check_case("cases/cavity_re10000/scene.toml"); }
 TEST_CASE(CASE_TEST("hydrostatic_tank")) { check_case("cases/hydrostatic_tank/scene.toml"); }
 TEST_CASE(CASE_TEST("spin_down periodic")) { check_case("cases/spin_down/periodic/scene.toml"); }
 // The case is the constrained projection, which solves the Poisson equation on the particles.

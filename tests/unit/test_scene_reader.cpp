@@ -332,7 +332,7 @@ TEST_CASE("scene: bad input gives a one-line InputError naming the key") {
        {"initial.velocity[0]", "unknown name \"t\""}},
       {"initial velocity length", b + "[initial]\nvelocity = [\"0\"]\n", {}, {"initial.velocity", "expected 2"}},
       {"dimension 3", b + "[scene]\ndimension = 3\n", {}, {"scene.dimension", "1 or 2"}},
-      {"ghia_re 50", b + "[metrics]\nghia_re = 50\n", {}, {"metrics.ghia_re", "100 or 1000"}},
+      {"ghia_re 50", b + "[metrics]\nghia_re = 50\n", {}, {"metrics.ghia_re", "100, 1000 or 10000"}},
       {"cfl zero", replace(b, "end = 1.0", "end = 1.0\ncfl = 0"), {}, {"time.cfl", "(0, 1]"}},
       {"negative density", replace(b, "spacing = 0.1", "spacing = 0.1\ndensity = -1"), {}, {"fluid.density"}},
       {"infinite end", b, {"time.end=inf"}, {"time.end", "finite"}},

@@ -101,8 +101,8 @@ TEST_CASE("auto: the PPE source is C&R eq. 17 on the particles, the difference f
 
 TEST_CASE("auto: the correction solver") {
   const Scene s = read(kWalled, {"method.scheme=isph", "method.density_correction=pozorski_wawrenczuk"});
-  CHECK(s.correction_solver == "fixed_point");
-  CHECK(chosen(s, "method.correction_solver") == "fixed_point");
+  CHECK(s.correction_solver == "newton");
+  CHECK(chosen(s, "method.correction_solver") == "newton");
 }
 
 TEST_CASE("auto: an explicit value is used as given and not listed as chosen") {

@@ -53,6 +53,7 @@ struct Scene {
   std::vector<std::string> initial_velocity{"0", "0"};
   std::vector<std::string> initial_offset{"0", "0"};  // displacement added to the lattice positions
   bool initial_hydrostatic = false;  // wcsph: start at the Tait density of the hydrostatic pressure
+  std::string initial_pressure = "0";  // wcsph: pressure expression p(x, y) at t = 0 (Tait density)
 
   // [[phase]]
   std::vector<PhaseSpec> phases;

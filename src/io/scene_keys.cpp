@@ -12,7 +12,7 @@
 #include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/projection.hpp"
-#include "rhs/hydrostatic_start.hpp"
+#include "rhs/initial_density.hpp"
 #include "rhs/term_registry.hpp"
 
 namespace arksph {
@@ -122,7 +122,7 @@ std::vector<Group> general_keys() {
         expressions("initial.offset", {"x", "y"}).unit("m")
             .doc("displacement of each lattice point (x, y) at t = 0").to(&Scene::initial_offset)},
        ""},
-      {hydrostatic_start_params(), "wcsph"},
+      {initial_density_params(), "wcsph"},
       {{
         ParamBuilder("phase.where", Param::Type::text, std::string()).required().custom()
             .doc("[[phase]]: region of a further phase, an expression in x, y; non-zero selects; must select a particle"),

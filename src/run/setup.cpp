@@ -9,7 +9,7 @@
 #include "core/expression.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
-#include "rhs/hydrostatic_start.hpp"
+#include "rhs/initial_density.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
@@ -62,7 +62,7 @@ Model build_model(const Scene& scene) {
   }
   const SchemeTraits& scheme = scheme_traits(scene.scheme);
   if (scheme.weakly_compressible) model.sound_speed = resolve_sound_speed(scene, u0max);
-  apply_hydrostatic_start(scene, model.sound_speed, model.particles);
+  apply_initial_density(scene, model.sound_speed, model.particles);
   // Ideal gas (Basa eq. 12): p = (gamma - 1) rho e; e(0) gives the sound speed sqrt(gamma p / rho) = c.
   if (equations_of_state().at(scene.equation_of_state).traits.adds_state("energy"))
     model.particles.init_energy = model.sound_speed * model.sound_speed / (scene.gas_gamma * (scene.gas_gamma - 1.0));

@@ -37,60 +37,76 @@ class Shifting final : public ParticleTerm<Shifting> {
       : scale_(coefficient * h * speed * v0),
         anti_clump_(anti_clump),
         inv_limit2_(limit > 0 && speed > 0 ? 1.0 / (limit * speed * limit * speed) : 0.0),  // U = 0: du = 0
-        inv_w_dx_(1.0 / w_dx),
+        clump_scale_(std::sqrt(std::sqrt(anti_clump)) / w_dx),
         density_(density) {}
   std::string name() const override { return "regularisation:shifting"; }
   bool moves_particles() const override { return true; }
   bool reads_kernel_value() const override { return anti_clump_ != 0.0; }
-  template <class Neighbors>
+  // The pair configuration C (rhs/particle_term.hpp) and whether Lind's weight is on, both fixed
+  // outside the pair loop: without it, W_ab is neither gathered nor read.
+  template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
-    const bool two_d = f.dim == 2;
-    const double ua = f.u[a], va = two_d ? f.v[a] : 0.0, rho_a = f.rho[a];
-    double cx = 0, cy = 0;                  // grad C
-    double uxx = 0, uxy = 0, uyx = 0, uyy = 0;  // grad u: u_{i,j} = d u_i / d x_j
-    double rx_sum = 0, ry_sum = 0;          // grad rho
-    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double w, double F) {
-      const double vb = f.vol[b];
-      double clump = 1.0;
-      if (anti_clump_ != 0.0) {
-        const double q = w * inv_w_dx_;
-        const double q2 = q * q;
-        clump += anti_clump_ * q2 * q2;  // n = 4
+    if (anti_clump_ != 0.0)
+      sums<C, true>(f, a, nb);
+    else
+      sums<C, false>(f, a, nb);
+  }
+
+ private:
+  template <class C, bool kClump, class Neighbors>
+  void sums(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    const bool two = two_d<C>(f);
+    const double ua = f.u[a], va = two ? f.v[a] : 0.0, rho_a = f.rho[a];
+    SplitSum cx, cy;                // grad C
+    SplitSum uxx, uxy, uyx, uyy;    // grad u: u_{i,j} = d u_i / d x_j
+    SplitSum rx_sum, ry_sum;        // grad rho
+    // One pair (double) or two (Two) at a time: see split_sum.hpp.
+    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto w, auto F) {
+      const auto vb = at(f.vol, b);
+      const auto gx = F * rx, gy = F * ry;  // grad_a W_ab
+      if constexpr (kClump) {
+        const auto q = clump_scale_ * w;
+        const auto q2 = q * q;
+        const auto clump = 1.0 + q2 * q2;  // 1 + R (W_ab / W(dx))^4, n = 4
+        cx[lane] += clump * gx;  // times V0 in scale_
+        cy[lane] += clump * gy;
+      } else {
+        cx[lane] += gx;
+        cy[lane] += gy;
       }
-      const double gx = F * rx, gy = F * ry;             // grad_a W_ab
-      cx += clump * gx;                                  // times V0 in scale_
-      cy += clump * gy;
-      const double du = vb * (f.u[b] - ua), dv = two_d ? vb * (f.v[b] - va) : 0.0;
-      uxx += du * gx;
-      uxy += du * gy;
-      uyx += dv * gx;
-      uyy += dv * gy;
+      const auto du = vb * (at(f.u, b) - ua);
+      uxx[lane] += du * gx;
+      uxy[lane] += du * gy;
+      if (two) {
+        const auto dv = vb * (at(f.v, b) - va);
+        uyx[lane] += dv * gx;
+        uyy[lane] += dv * gy;
+      }
       if (density_) {
-        const double dr = vb * (f.rho[b] - rho_a);
-        rx_sum += dr * gx;
-        ry_sum += dr * gy;
+        const auto dr = vb * (at(f.rho, b) - rho_a);
+        rx_sum[lane] += dr * gx;
+        ry_sum[lane] += dr * gy;
       }
     });
-    double sx = -scale_ * cx, sy = two_d ? -scale_ * cy : 0.0;
+    double sx = -scale_ * cx.total(), sy = two ? -scale_ * cy.total() : 0.0;
     if (inv_limit2_ > 0) {
       const double damp = 1.0 / std::sqrt(1.0 + (sx * sx + sy * sy) * inv_limit2_);
       sx *= damp;
       sy *= damp;
     }
     f.shift_u[a] = sx;
-    f.dudt[a] += sx * uxx + sy * uxy;
-    if (two_d) {
+    f.dudt[a] += sx * uxx.total() + sy * uxy.total();
+    if (two) {
       f.shift_v[a] = sy;
-      f.dvdt[a] += sx * uyx + sy * uyy;
+      f.dvdt[a] += sx * uyx.total() + sy * uyy.total();
     }
-    if (density_) f.drhodt[a] += sx * rx_sum + sy * ry_sum;
+    if (density_) f.drhodt[a] += sx * rx_sum.total() + sy * ry_sum.total();
   }
 
- private:
   double scale_;      // A h U V0
   double anti_clump_; // R
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
-  double inv_w_dx_;   // 1 / W(dx)
+  double clump_scale_; // R^(1/4) / W(dx): R (W / W(dx))^4 = ((clump_scale_ W)^2)^2
   bool density_;      // the density is a state (continuity equation): carried too
 };
 

@@ -15,7 +15,7 @@
 // factor is 1 to second order.
 // The carried fields follow the shifted particle, not the fluid (Lind eq. 11 as a rate):
 //   du_a/dt += (du_a . grad) u_a,   drho_a/dt += du_a . grad rho_a (WCSPH with the continuity equation),
-// with grad f_a = sum_b V_b (f_b - f_a) grad_a W_ab. Ghosts count as neighbours, so a wall is no
+// with du_a . grad f_a = sum_b V_b (f_b - f_a) du_a . grad_a W_ab. Ghosts count as neighbours, so a wall is no
 // free surface: the lattice next to it is not pulled apart.
 #include <cmath>
 
@@ -53,40 +53,23 @@ class Shifting final : public ParticleTerm<Shifting> {
   }
 
  private:
+  // Two passes over the neighbours: grad C gives du_a, then du_a . grad_a W_ab = F (du_a . r_ab)
+  // weighs each neighbour's differences once, so that the carried fields need three sums, not the
+  // six of grad u and grad rho.
   template <class C, bool kClump, class Neighbors>
   void sums(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const bool two = two_d<C>(f);
-    const double ua = f.u[a], va = two ? f.v[a] : 0.0, rho_a = f.rho[a];
-    SplitSum cx, cy;                // grad C
-    SplitSum uxx, uxy, uyx, uyy;    // grad u: u_{i,j} = d u_i / d x_j
-    SplitSum rx_sum, ry_sum;        // grad rho
+    SplitSum cx, cy;  // grad C
     // One pair (double) or two (Two) at a time: see split_sum.hpp.
-    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto w, auto F) {
-      const auto vb = at(f.vol, b);
-      const auto gx = F * rx, gy = F * ry;  // grad_a W_ab
+    nb.for_pairs_split(C{}, [&](auto lane, auto, auto rx, auto ry, auto, auto w, auto F) {
+      auto weight = F;  // grad_a W_ab = F r_ab
       if constexpr (kClump) {
         const auto q = clump_scale_ * w;
         const auto q2 = q * q;
-        const auto clump = 1.0 + q2 * q2;  // 1 + R (W_ab / W(dx))^4, n = 4
-        cx[lane] += clump * gx;  // times V0 in scale_
-        cy[lane] += clump * gy;
-      } else {
-        cx[lane] += gx;
-        cy[lane] += gy;
+        weight = (1.0 + q2 * q2) * F;  // (1 + R (W_ab / W(dx))^4) F, n = 4
       }
-      const auto du = vb * (at(f.u, b) - ua);
-      uxx[lane] += du * gx;
-      uxy[lane] += du * gy;
-      if (two) {
-        const auto dv = vb * (at(f.v, b) - va);
-        uyx[lane] += dv * gx;
-        uyy[lane] += dv * gy;
-      }
-      if (density_) {
-        const auto dr = vb * (at(f.rho, b) - rho_a);
-        rx_sum[lane] += dr * gx;
-        ry_sum[lane] += dr * gy;
-      }
+      cx[lane] += weight * rx;  // times V0 in scale_
+      cy[lane] += weight * ry;
     });
     double sx = -scale_ * cx.total(), sy = two ? -scale_ * cy.total() : 0.0;
     if (inv_limit2_ > 0) {
@@ -95,12 +78,18 @@ class Shifting final : public ParticleTerm<Shifting> {
       sy *= damp;
     }
     f.shift_u[a] = sx;
-    f.dudt[a] += sx * uxx.total() + sy * uxy.total();
-    if (two) {
-      f.shift_v[a] = sy;
-      f.dvdt[a] += sx * uyx.total() + sy * uyy.total();
-    }
-    if (density_) f.drhodt[a] += sx * rx_sum.total() + sy * ry_sum.total();
+    if (two) f.shift_v[a] = sy;
+    const double ua = f.u[a], va = two ? f.v[a] : 0.0, rho_a = f.rho[a];
+    SplitSum du, dv, drho;  // (du . grad) u, du . grad rho
+    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
+      const auto along = at(f.vol, b) * (F * (sx * rx + sy * ry));  // V_b du_a . grad_a W_ab
+      du[lane] += along * (at(f.u, b) - ua);
+      if (two) dv[lane] += along * (at(f.v, b) - va);
+      if (density_) drho[lane] += along * (at(f.rho, b) - rho_a);
+    });
+    f.dudt[a] += du.total();
+    if (two) f.dvdt[a] += dv.total();
+    if (density_) f.drhodt[a] += drho.total();
   }
 
   double scale_;      // A h U V0

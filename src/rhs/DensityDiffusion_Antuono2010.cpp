@@ -11,6 +11,7 @@
 // is the source's hydrostatic one, not that of the image's own depth.
 #include "core/expression.hpp"
 #include "core/param_builder.hpp"
+#include "rhs/density_diffusion_sum.hpp"
 #include "rhs/particle_term.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
@@ -18,12 +19,16 @@
 namespace arksph {
 namespace {
 
-class DensityDiffusion final : public ParticleTerm<DensityDiffusion> {
+class DensityDiffusion final : public ParticleTerm<DensityDiffusion>, public DensityDiffusionSum {
  public:
   DensityDiffusion(double delta, double h, double c, double gx, double gy)
       : coeff_(2.0 * delta * h * c), hx_(gx / (c * c)), hy_(gy / (c * c)) {}
   std::string name() const override { return "density_diffusion:delta_sph"; }
   bool reads_kernel_value() const override { return false; }
+  std::optional<double> plain_coefficient() const override {
+    if (hx_ != 0.0 || hy_ != 0.0) return std::nullopt;
+    return coeff_;
+  }
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double rho_a = f.rho[a], rho0 = f.rho0[a];

@@ -21,6 +21,7 @@
 
 #include "core/param_builder.hpp"
 #include "kernels/kernel.hpp"
+#include "rhs/density_diffusion_sum.hpp"
 #include "rhs/particle_term.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
@@ -42,6 +43,17 @@ class Shifting final : public ParticleTerm<Shifting> {
   std::string name() const override { return "regularisation:shifting"; }
   bool moves_particles() const override { return true; }
   bool reads_kernel_value() const override { return anti_clump_ != 0.0; }
+  // delta-SPH without a hydrostatic part sums over the V_b (rho_b - rho_a) that the carried density
+  // visits already (rhs/density_diffusion_sum.hpp): the evaluator lets this term add it.
+  bool take_over(const Term& other) override {
+    const auto* diffusion = dynamic_cast<const DensityDiffusionSum*>(&other);
+    if (!diffusion || !density_ || diffuse_) return false;
+    const std::optional<double> coeff = diffusion->plain_coefficient();
+    if (!coeff) return false;
+    diffuse_ = true;
+    diffusion_coeff_ = *coeff;
+    return true;
+  }
   // The pair configuration C (rhs/particle_term.hpp) and whether Lind's weight is on, both fixed
   // outside the pair loop: without it, W_ab is neither gathered nor read.
   template <class C, class Neighbors>
@@ -53,9 +65,8 @@ class Shifting final : public ParticleTerm<Shifting> {
   }
 
  private:
-  // Two passes over the neighbours: grad C gives du_a, then du_a . grad_a W_ab = F (du_a . r_ab)
-  // weighs each neighbour's differences once, so that the carried fields need three sums, not the
-  // six of grad u and grad rho.
+  // Two passes over the neighbours: grad C, then the carried fields weighted by grad C . grad_a W_ab
+  // = F (grad C . r_ab), so that they need three sums, not the six of grad u and grad rho.
   template <class C, bool kClump, class Neighbors>
   void sums(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const bool two = two_d<C>(f);
@@ -71,25 +82,33 @@ class Shifting final : public ParticleTerm<Shifting> {
       cx[lane] += weight * rx;  // times V0 in scale_
       cy[lane] += weight * ry;
     });
-    double sx = -scale_ * cx.total(), sy = two ? -scale_ * cy.total() : 0.0;
-    if (inv_limit2_ > 0) {
-      const double damp = 1.0 / std::sqrt(1.0 + (sx * sx + sy * sy) * inv_limit2_);
-      sx *= damp;
-      sy *= damp;
-    }
-    f.shift_u[a] = sx;
-    if (two) f.shift_v[a] = sy;
+    const double gcx = cx.total(), gcy = two ? cy.total() : 0.0;
     const double ua = f.u[a], va = two ? f.v[a] : 0.0, rho_a = f.rho[a];
-    SplitSum du, dv, drho;  // (du . grad) u, du . grad rho
+    // The carried fields along grad C (du_a is a multiple of it, applied after the sums, so that
+    // the pair loop does not wait for the saturation's square root).
+    SplitSum du, dv, drho;  // (grad C . grad) u, grad C . grad rho
+    SplitSum diffusion;     // delta-SPH's sum, when taken over
     nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
-      const auto along = at(f.vol, b) * (F * (sx * rx + sy * ry));  // V_b du_a . grad_a W_ab
+      const auto fv = F * at(f.vol, b);
+      const auto along = fv * (gcx * rx + gcy * ry);  // V_b grad C_a . grad_a W_ab
       du[lane] += along * (at(f.u, b) - ua);
       if (two) dv[lane] += along * (at(f.v, b) - va);
-      if (density_) drho[lane] += along * (at(f.rho, b) - rho_a);
+      if (density_) {
+        const auto rho_ba = at(f.rho, b) - rho_a;
+        drho[lane] += along * rho_ba;
+        if (diffuse_) diffusion[lane] -= fv * rho_ba;  // as rhs/DensityDiffusion_Antuono2010.cpp
+      }
     });
-    f.dudt[a] += du.total();
-    if (two) f.dvdt[a] += dv.total();
-    if (density_) f.drhodt[a] += drho.total();
+    if (diffuse_) f.drhodt[a] += diffusion_coeff_ * diffusion.total();
+    double k = -scale_;  // du_a = k grad C_a
+    if (inv_limit2_ > 0) k /= std::sqrt(1.0 + k * k * (gcx * gcx + gcy * gcy) * inv_limit2_);
+    f.shift_u[a] = k * gcx;
+    f.dudt[a] += k * du.total();
+    if (two) {
+      f.shift_v[a] = k * gcy;
+      f.dvdt[a] += k * dv.total();
+    }
+    if (density_) f.drhodt[a] += k * drho.total();
   }
 
   double scale_;      // A h U V0
@@ -97,6 +116,8 @@ class Shifting final : public ParticleTerm<Shifting> {
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
   double clump_scale_; // R^(1/4) / W(dx): R (W / W(dx))^4 = ((clump_scale_ W)^2)^2
   bool density_;      // the density is a state (continuity equation): carried too
+  bool diffuse_ = false;        // delta-SPH taken over (take_over)
+  double diffusion_coeff_ = 0;  // its 2 delta h c
 };
 
 static_assert(kAntiClumpN == 4, "the anti-clumping factor is written out for n = 4");

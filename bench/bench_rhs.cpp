@@ -11,7 +11,8 @@ namespace {
 
 // Particle regularisation off: the scene's "auto" turns on shifting and delta-SPH under WCSPH, and
 // these two benchmarks measure the f without them.
-const std::vector<std::string> kNoRegularisation = {"method.regularisation=\"none\"", "method.density_diffusion=\"none\""};
+const std::vector<std::string> kNoRegularisation = {"method.regularisation=\"none\"",
+                                                   "method.density_diffusion=\"none\""};
 
 // The f without regularisation: per-particle force terms in one sweep, each neighbourhood gathered once.
 void BM_RhsEval(benchmark::State& state) {

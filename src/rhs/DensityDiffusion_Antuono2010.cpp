@@ -42,7 +42,8 @@ class DensityDiffusion final : public ParticleTerm<DensityDiffusion>, public Den
     } else {
       // A wall image's separation is its source's, looked up per pair: one pair at a time.
       const double xa = f.x[a], ya = f.dim == 2 ? f.y[a] : 0.0;
-      nb.for_pairs_split(GeneralPairs{}, [&](auto lane, std::uint32_t b, double rx, double ry, double, double, double F) {
+      nb.for_pairs_split(GeneralPairs{}, [&](auto lane, std::uint32_t b, double rx, double ry, double, double,
+                                             double F) {
         if (f.is_wall_image(b)) {
           const std::uint32_t s = f.src[b];
           rx = xa - f.x[s];

@@ -15,8 +15,8 @@
 // factor is 1 to second order.
 // The carried fields follow the shifted particle, not the fluid (Lind eq. 11 as a rate):
 //   du_a/dt += (du_a . grad) u_a,   drho_a/dt += du_a . grad rho_a (WCSPH with the continuity equation),
-// with du_a . grad f_a = sum_b V_b (f_b - f_a) du_a . grad_a W_ab. Ghosts count as neighbours, so a wall is no
-// free surface: the lattice next to it is not pulled apart.
+// with du_a . grad f_a = sum_b V_b (f_b - f_a) du_a . grad_a W_ab. Ghosts count as neighbours, so a
+// wall is no free surface: the lattice next to it is not pulled apart.
 #include <cmath>
 
 #include "core/param_builder.hpp"

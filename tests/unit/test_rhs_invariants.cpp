@@ -168,7 +168,8 @@ TEST_CASE("rhs: the plain pair loops give the general loops' derivatives bit for
         CAPTURE(sweep);
         CAPTURE(regularised);
         std::vector<std::string> sets = {std::string("method.force_sweep=") + (sweep ? "true" : "false")};
-        if (regularised) sets.insert(sets.end(), {"method.regularisation=shifting", "method.density_diffusion=delta_sph"});
+        if (regularised)
+          sets.insert(sets.end(), {"method.regularisation=shifting", "method.density_diffusion=delta_sph"});
         const Scene scene = read_scene_text(scene_variant(walls).resolved_toml, "<test>", sets, std::cerr);
         std::vector<double> out[2];
         for (int plain : {0, 1}) {

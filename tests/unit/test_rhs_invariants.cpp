@@ -72,9 +72,13 @@ std::vector<double> disturbed_state(Model& model) {
 }  // namespace
 
 TEST_CASE("rhs: 1 and 2 OpenMP threads give bit-identical derivatives") {
-  for (bool walls : {false, true}) {
-    CAPTURE(walls);
-    const Scene scene = scene_variant(walls);
+  for (int variant : {0, 1, 2, 3}) {  // periodic, walled; both again with shifting and delta-SPH
+    const bool walls = variant % 2 == 1;
+    CAPTURE(variant);
+    Scene scene = scene_variant(walls);
+    if (variant >= 2)
+      scene = read_scene_text(scene.resolved_toml, "<test>",
+                              {"method.regularisation=shifting", "method.density_diffusion=delta_sph"}, std::cerr);
     std::vector<double> ydot[2];
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);

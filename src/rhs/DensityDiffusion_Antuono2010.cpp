@@ -11,6 +11,7 @@
 // is the source's hydrostatic one, not that of the image's own depth.
 #include "core/expression.hpp"
 #include "core/param_builder.hpp"
+#include "rhs/density_diffusion_sum.hpp"
 #include "rhs/particle_term.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
@@ -18,34 +19,41 @@
 namespace arksph {
 namespace {
 
-class DensityDiffusion final : public ParticleTerm<DensityDiffusion> {
+class DensityDiffusion final : public ParticleTerm<DensityDiffusion>, public DensityDiffusionSum {
  public:
   DensityDiffusion(double delta, double h, double c, double gx, double gy)
       : coeff_(2.0 * delta * h * c), hx_(gx / (c * c)), hy_(gy / (c * c)) {}
   std::string name() const override { return "density_diffusion:delta_sph"; }
   bool reads_kernel_value() const override { return false; }
-  template <class Neighbors>
+  std::optional<double> plain_coefficient() const override {
+    if (hx_ != 0.0 || hy_ != 0.0) return std::nullopt;
+    return coeff_;
+  }
+  template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const double rho_a = f.rho[a], rho0 = f.rho0[a];
-    const double hx = rho0 * hx_, hy = f.dim == 2 ? rho0 * hy_ : 0.0;
-    double sum = 0;
+    const double hx = rho0 * hx_, hy = two_d<C>(f) ? rho0 * hy_ : 0.0;
+    SplitSum sum;
     if (hx == 0.0 && hy == 0.0) {
-      nb.for_pairs([&](std::uint32_t b, double, double, double, double, double F) {
-        sum -= F * f.vol[b] * (f.rho[b] - rho_a);
+      // One pair (double) or two (Two) at a time: see split_sum.hpp.
+      nb.for_pairs_split(C{}, [&](auto lane, auto b, auto, auto, auto, auto, auto F) {
+        sum[lane] -= F * at(f.vol, b) * (at(f.rho, b) - rho_a);
       });
     } else {
+      // A wall image's separation is its source's, looked up per pair: one pair at a time.
       const double xa = f.x[a], ya = f.dim == 2 ? f.y[a] : 0.0;
-      nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      nb.for_pairs_split(GeneralPairs{}, [&](auto lane, std::uint32_t b, double rx, double ry, double, double,
+                                             double F) {
         if (f.is_wall_image(b)) {
           const std::uint32_t s = f.src[b];
           rx = xa - f.x[s];
           ry = f.dim == 2 ? ya - f.y[s] : 0.0;
         }
         const double dynamic = f.rho[b] - rho_a + (hx * rx + hy * ry);
-        sum -= F * f.vol[b] * dynamic;
+        sum[lane] -= F * f.vol[b] * dynamic;
       });
     }
-    f.drhodt[a] += coeff_ * sum;
+    f.drhodt[a] += coeff_ * sum.total();
   }
 
  private:

@@ -15,12 +15,13 @@
 // factor is 1 to second order.
 // The carried fields follow the shifted particle, not the fluid (Lind eq. 11 as a rate):
 //   du_a/dt += (du_a . grad) u_a,   drho_a/dt += du_a . grad rho_a (WCSPH with the continuity equation),
-// with grad f_a = sum_b V_b (f_b - f_a) grad_a W_ab. Ghosts count as neighbours, so a wall is no
-// free surface: the lattice next to it is not pulled apart.
+// with du_a . grad f_a = sum_b V_b (f_b - f_a) du_a . grad_a W_ab. Ghosts count as neighbours, so a
+// wall is no free surface: the lattice next to it is not pulled apart.
 #include <cmath>
 
 #include "core/param_builder.hpp"
 #include "kernels/kernel.hpp"
+#include "rhs/density_diffusion_sum.hpp"
 #include "rhs/particle_term.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
@@ -37,61 +38,86 @@ class Shifting final : public ParticleTerm<Shifting> {
       : scale_(coefficient * h * speed * v0),
         anti_clump_(anti_clump),
         inv_limit2_(limit > 0 && speed > 0 ? 1.0 / (limit * speed * limit * speed) : 0.0),  // U = 0: du = 0
-        inv_w_dx_(1.0 / w_dx),
+        clump_scale_(std::sqrt(std::sqrt(anti_clump)) / w_dx),
         density_(density) {}
   std::string name() const override { return "regularisation:shifting"; }
   bool moves_particles() const override { return true; }
   bool reads_kernel_value() const override { return anti_clump_ != 0.0; }
-  template <class Neighbors>
+  // delta-SPH without a hydrostatic part sums over the V_b (rho_b - rho_a) that the carried density
+  // visits already (rhs/density_diffusion_sum.hpp): the evaluator lets this term add it.
+  bool take_over(const Term& other) override {
+    const auto* diffusion = dynamic_cast<const DensityDiffusionSum*>(&other);
+    if (!diffusion || !density_ || diffuse_) return false;
+    const std::optional<double> coeff = diffusion->plain_coefficient();
+    if (!coeff) return false;
+    diffuse_ = true;
+    diffusion_coeff_ = *coeff;
+    return true;
+  }
+  // The pair configuration C (rhs/particle_term.hpp) and whether Lind's weight is on, both fixed
+  // outside the pair loop: without it, W_ab is neither gathered nor read.
+  template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
-    const bool two_d = f.dim == 2;
-    const double ua = f.u[a], va = two_d ? f.v[a] : 0.0, rho_a = f.rho[a];
-    double cx = 0, cy = 0;                  // grad C
-    double uxx = 0, uxy = 0, uyx = 0, uyy = 0;  // grad u: u_{i,j} = d u_i / d x_j
-    double rx_sum = 0, ry_sum = 0;          // grad rho
-    nb.for_pairs([&](std::uint32_t b, double rx, double ry, double, double w, double F) {
-      const double vb = f.vol[b];
-      double clump = 1.0;
-      if (anti_clump_ != 0.0) {
-        const double q = w * inv_w_dx_;
-        const double q2 = q * q;
-        clump += anti_clump_ * q2 * q2;  // n = 4
-      }
-      const double gx = F * rx, gy = F * ry;             // grad_a W_ab
-      cx += clump * gx;                                  // times V0 in scale_
-      cy += clump * gy;
-      const double du = vb * (f.u[b] - ua), dv = two_d ? vb * (f.v[b] - va) : 0.0;
-      uxx += du * gx;
-      uxy += du * gy;
-      uyx += dv * gx;
-      uyy += dv * gy;
-      if (density_) {
-        const double dr = vb * (f.rho[b] - rho_a);
-        rx_sum += dr * gx;
-        ry_sum += dr * gy;
-      }
-    });
-    double sx = -scale_ * cx, sy = two_d ? -scale_ * cy : 0.0;
-    if (inv_limit2_ > 0) {
-      const double damp = 1.0 / std::sqrt(1.0 + (sx * sx + sy * sy) * inv_limit2_);
-      sx *= damp;
-      sy *= damp;
-    }
-    f.shift_u[a] = sx;
-    f.dudt[a] += sx * uxx + sy * uxy;
-    if (two_d) {
-      f.shift_v[a] = sy;
-      f.dvdt[a] += sx * uyx + sy * uyy;
-    }
-    if (density_) f.drhodt[a] += sx * rx_sum + sy * ry_sum;
+    if (anti_clump_ != 0.0)
+      sums<C, true>(f, a, nb);
+    else
+      sums<C, false>(f, a, nb);
   }
 
  private:
+  // Two passes over the neighbours: grad C, then the carried fields weighted by grad C . grad_a W_ab
+  // = F (grad C . r_ab), so that they need three sums, not the six of grad u and grad rho.
+  template <class C, bool kClump, class Neighbors>
+  void sums(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    const bool two = two_d<C>(f);
+    SplitSum cx, cy;  // grad C
+    // One pair (double) or two (Two) at a time: see split_sum.hpp.
+    nb.for_pairs_split(C{}, [&](auto lane, auto, auto rx, auto ry, auto, auto w, auto F) {
+      auto weight = F;  // grad_a W_ab = F r_ab
+      if constexpr (kClump) {
+        const auto q = clump_scale_ * w;
+        const auto q2 = q * q;
+        weight = (1.0 + q2 * q2) * F;  // (1 + R (W_ab / W(dx))^4) F, n = 4
+      }
+      cx[lane] += weight * rx;  // times V0 in scale_
+      cy[lane] += weight * ry;
+    });
+    const double gcx = cx.total(), gcy = two ? cy.total() : 0.0;
+    const double ua = f.u[a], va = two ? f.v[a] : 0.0, rho_a = f.rho[a];
+    // The carried fields along grad C (du_a is a multiple of it, applied after the sums, so that
+    // the pair loop does not wait for the saturation's square root).
+    SplitSum du, dv, drho;  // (grad C . grad) u, grad C . grad rho
+    SplitSum diffusion;     // delta-SPH's sum, when taken over
+    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
+      const auto fv = F * at(f.vol, b);
+      const auto along = fv * (gcx * rx + gcy * ry);  // V_b grad C_a . grad_a W_ab
+      du[lane] += along * (at(f.u, b) - ua);
+      if (two) dv[lane] += along * (at(f.v, b) - va);
+      if (density_) {
+        const auto rho_ba = at(f.rho, b) - rho_a;
+        drho[lane] += along * rho_ba;
+        if (diffuse_) diffusion[lane] -= fv * rho_ba;  // as rhs/DensityDiffusion_Antuono2010.cpp
+      }
+    });
+    if (diffuse_) f.drhodt[a] += diffusion_coeff_ * diffusion.total();
+    double k = -scale_;  // du_a = k grad C_a
+    if (inv_limit2_ > 0) k /= std::sqrt(1.0 + k * k * (gcx * gcx + gcy * gcy) * inv_limit2_);
+    f.shift_u[a] = k * gcx;
+    f.dudt[a] += k * du.total();
+    if (two) {
+      f.shift_v[a] = k * gcy;
+      f.dvdt[a] += k * dv.total();
+    }
+    if (density_) f.drhodt[a] += k * drho.total();
+  }
+
   double scale_;      // A h U V0
   double anti_clump_; // R
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
-  double inv_w_dx_;   // 1 / W(dx)
+  double clump_scale_; // R^(1/4) / W(dx): R (W / W(dx))^4 = ((clump_scale_ W)^2)^2
   bool density_;      // the density is a state (continuity equation): carried too
+  bool diffuse_ = false;        // delta-SPH taken over (take_over)
+  double diffusion_coeff_ = 0;  // its 2 delta h c
 };
 
 static_assert(kAntiClumpN == 4, "the anti-clumping factor is written out for n = 4");

@@ -48,6 +48,16 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
     implicit_.push_back(t->can_be_implicit());
     moves_particles_ = moves_particles_ || t->moves_particles();
   }
+  // Force terms of one partition that one pair loop can serve (Term::take_over): the one taken over
+  // runs no more.
+  taken_.assign(terms_.size(), 0);
+  for (std::size_t i = 0; i < terms_.size(); ++i)
+    for (std::size_t j = 0; j < terms_.size(); ++j) {
+      const bool pairable = i != j && !taken_[i] && !taken_[j] && terms_[i]->stage() == Term::Stage::force &&
+                            terms_[j]->stage() == Term::Stage::force && terms_[i]->per_particle() &&
+                            terms_[j]->per_particle() && implicit_[i] == implicit_[j];
+      if (pairable && terms_[i]->take_over(*terms_[j])) taken_[j] = 1;
+    }
   // The projection walks the pairs of its field refresh (at r*) several times (divergence,
   // assembly, gradient): stored, not lean. Its force terms' f(t, y) is at other positions, so they
   // run in the sweep like WCSPH's.
@@ -174,7 +184,7 @@ void RhsEvaluator::implicit_acceleration(std::vector<double>& au, std::vector<do
   std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
   std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
   for (std::size_t k = 0; k < terms_.size(); ++k)
-    if (in(Partition::implicit_terms, k)) terms_[k]->apply(f);
+    if (in(Partition::implicit_terms, k) && !taken_[k]) terms_[k]->apply(f);
   au.assign(f.dudt.begin(), f.dudt.end());
   av.assign(f.dvdt.begin(), f.dvdt.end());
   f.dudt.swap(keep_du_);
@@ -213,10 +223,12 @@ void RhsEvaluator::viscous_acceleration(const double* u, const double* v, double
 void RhsEvaluator::sweep(std::size_t first, std::size_t last) {
   FluidFields& f = fields_;
   bool with_w = f.correction != FluidFields::Correction::none;
-  for (std::size_t k = first; k < last; ++k) with_w = with_w || terms_[k]->reads_kernel_value();
+  for (std::size_t k = first; k < last; ++k) with_w = with_w || (!taken_[k] && terms_[k]->reads_kernel_value());
   const std::unique_ptr<Term>* terms = terms_.data();
-  neighbors_.sweep(f, with_w, [&f, terms, first, last](std::size_t a, const Neighborhood& nb) {
-    for (std::size_t k = first; k < last; ++k) terms[k]->apply_particle(f, a, nb);
+  const char* taken = taken_.data();
+  neighbors_.sweep(f, with_w, [&f, terms, taken, first, last](std::size_t a, const Neighborhood& nb) {
+    for (std::size_t k = first; k < last; ++k)
+      if (!taken[k]) terms[k]->apply_particle(f, a, nb);
   });
 }
 
@@ -246,7 +258,7 @@ void RhsEvaluator::sum_stages(Partition part) {
         }
       }
     }
-    if (!in(part, k)) {
+    if (!in(part, k) || taken_[k]) {
       ++k;
       continue;
     }

@@ -99,6 +99,7 @@ class RhsEvaluator {
   Kernel kernel_;
   std::vector<std::unique_ptr<Term>> terms_;  // in stage order
   std::vector<bool> implicit_;                // per term: Term::can_be_implicit
+  std::vector<char> taken_;                   // per term: taken over by another (Term::take_over)
   GhostField ghosts_;
   NeighborCache neighbors_;
   FluidFields fields_;

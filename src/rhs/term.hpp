@@ -32,6 +32,11 @@ class Term {
   // Whether apply_particle reads W_ab other than through corrected_gradient (which needs it only
   // when a kernel correction is on). The sweep skips W when no term needs it.
   virtual bool reads_kernel_value() const { return true; }
+  // Whether this term adds `other`'s contribution in its own pair loop from now on, so that one walk
+  // over the neighbours serves both: the evaluator asks this of force terms of the same partition
+  // and then runs `other` no more (in the sweep and over the pairs alike). A term that says yes
+  // keeps what it needs of `other`. Terms built outside the evaluator are not asked and stay whole.
+  virtual bool take_over(const Term& /*other*/) { return false; }
   // The traits of the registered part that built the term (core/registry.hpp), set by
   // terms_from_scene; a term built without a part has the default traits.
   const PartTraits& traits() const { return traits_; }

@@ -72,9 +72,13 @@ std::vector<double> disturbed_state(Model& model) {
 }  // namespace
 
 TEST_CASE("rhs: 1 and 2 OpenMP threads give bit-identical derivatives") {
-  for (bool walls : {false, true}) {
-    CAPTURE(walls);
-    const Scene scene = scene_variant(walls);
+  for (int variant : {0, 1, 2, 3}) {  // periodic, walled; both again with shifting and delta-SPH
+    const bool walls = variant % 2 == 1;
+    CAPTURE(variant);
+    Scene scene = scene_variant(walls);
+    if (variant >= 2)
+      scene = read_scene_text(scene.resolved_toml, "<test>",
+                              {"method.regularisation=shifting", "method.density_diffusion=delta_sph"}, std::cerr);
     std::vector<double> ydot[2];
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
@@ -122,7 +126,8 @@ TEST_CASE("rhs: lean neighbour storage gives bit-identical derivatives and proje
 // method.force_sweep (the default) runs the per-particle force terms from one gathered neighbourhood
 // per particle instead of each term walking the stored pair list: the same pairs, kernel values and
 // sums in the same order, so the derivatives must agree bit for bit, for every sweep-capable term and
-// for a mix with terms that still walk the pair list (a kernel correction, pressure reduction).
+// for a mix with terms that still walk the pair list (a kernel correction, pressure reduction), and
+// with the regularisation (shifting, with and without Lind's weight, and delta-SPH).
 TEST_CASE("rhs: the force sweep gives the term-by-term derivatives bit for bit") {
   const std::vector<std::vector<std::string>> variants = {
       {},
@@ -131,6 +136,8 @@ TEST_CASE("rhs: the force sweep gives the term-by-term derivatives bit for bit")
       {"method.viscosity_model=direct", "method.kernel_correction=shepard"},
       {"method.kernel_correction=bonet_lok", "method.pressure_reduction=true"},
       {"method.equation_of_state=ideal_gas"},
+      {"method.regularisation=shifting", "method.density_diffusion=delta_sph"},
+      {"method.regularisation=shifting", "method.shifting_anti_clumping=0"},
   };
   for (bool walls : {false, true}) {
     for (std::size_t v = 0; v < variants.size(); ++v) {
@@ -156,22 +163,28 @@ TEST_CASE("rhs: the force sweep gives the term-by-term derivatives bit for bit")
 
 // The plain pair loops (2D, no kernel correction, no pressure reduction known at compile time:
 // rhs/particle_term.hpp) against the general ones that test these per pair: the same bits.
+// With and without the regularisation (shifting and delta-SPH, whose plain loops are separate code).
 TEST_CASE("rhs: the plain pair loops give the general loops' derivatives bit for bit") {
   for (bool walls : {false, true}) {
     for (bool sweep : {false, true}) {
-      CAPTURE(walls);
-      CAPTURE(sweep);
-      const Scene scene = read_scene_text(scene_variant(walls).resolved_toml, "<test>",
-                                          {std::string("method.force_sweep=") + (sweep ? "true" : "false")}, std::cerr);
-      std::vector<double> out[2];
-      for (int plain : {0, 1}) {
-        Model model = build_model(scene);
-        model.rhs->set_options({.plain_pair_loops = plain == 1});
-        std::vector<double> y = disturbed_state(model);
-        out[plain].assign(y.size(), 0.0);
-        model.rhs->eval(0.0, y.data(), out[plain].data());
+      for (bool regularised : {false, true}) {
+        CAPTURE(walls);
+        CAPTURE(sweep);
+        CAPTURE(regularised);
+        std::vector<std::string> sets = {std::string("method.force_sweep=") + (sweep ? "true" : "false")};
+        if (regularised)
+          sets.insert(sets.end(), {"method.regularisation=shifting", "method.density_diffusion=delta_sph"});
+        const Scene scene = read_scene_text(scene_variant(walls).resolved_toml, "<test>", sets, std::cerr);
+        std::vector<double> out[2];
+        for (int plain : {0, 1}) {
+          Model model = build_model(scene);
+          model.rhs->set_options({.plain_pair_loops = plain == 1});
+          std::vector<double> y = disturbed_state(model);
+          out[plain].assign(y.size(), 0.0);
+          model.rhs->eval(0.0, y.data(), out[plain].data());
+        }
+        CHECK(std::memcmp(out[0].data(), out[1].data(), out[0].size() * sizeof(double)) == 0);
       }
-      CHECK(std::memcmp(out[0].data(), out[1].data(), out[0].size() * sizeof(double)) == 0);
     }
   }
 }

@@ -122,6 +122,9 @@ int cmd_run(int argc, char** argv) {
     std::fprintf(stderr, "arksph: simulation failed: %s (output so far kept in %s)\n", r.message.c_str(),
                  scene.directory.c_str());
   } else {
+    if (r.steady_time >= 0)
+      std::printf("arksph: steady state at t = %.6g (change rate %.3g < time.steady_tolerance = %g), before time.end = %g\n",
+                  r.steady_time, r.steady_rate, scene.steady_tolerance, scene.end);
     std::printf("arksph: finished, output in %s\n", scene.directory.c_str());
     arksph::print_next_steps(scene.directory);
   }

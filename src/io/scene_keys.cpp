@@ -5,6 +5,7 @@
 #include "boundary/wall_velocity_rules.hpp"
 #include "core/param_builder.hpp"
 #include "core/scheme.hpp"
+#include "diagnostics/steady_state.hpp"
 #include "integrate/time_params.hpp"
 #include "io/scene_catalog.hpp"
 #include "kernels/kernel.hpp"
@@ -172,6 +173,7 @@ std::vector<Group> general_keys() {
             .to(&Scene::reorder_every),
         number("time.end", 1.0).required().in(above(0)).unit("s").doc("final simulated time").to(&Scene::end)},
        ""},
+      {steady_state_params(), ""},
       {time_params(), "time integration"},
       {imex_params(), "imex"},
       {{text("output.directory", "").doc("output folder (--out overrides); default runs/<scene.name>")

@@ -55,6 +55,9 @@ void check_progress(const std::map<std::string, Section>& sections, const Scene&
   if (s.dt > 0 && !(s.dt >= spacing_at_end))
     time.fail("dt", format_number(s.dt) + " is below the spacing of doubles at time.end = " + format_number(s.end) +
                         " (" + format_number(spacing_at_end) + "): t + dt == t, the run could not advance");
+  if (s.steady_tolerance > 0 && s.every <= 0)
+    time.fail("steady_tolerance", format_number(s.steady_tolerance) +
+                                      " needs output.every > 0: the steady-state rate is measured between output times");
   const struct {
     const char* key;
     double every;

@@ -28,7 +28,8 @@ double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), 
 }  // namespace
 
 RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id)
-    : scene_(scene), model_(model), options_(options), run_id_(std::move(run_id)) {
+    : scene_(scene), model_(model), options_(options), run_id_(std::move(run_id)),
+      steady_(scene.steady_tolerance, scene.steady_window) {
   if (options.write_frames) {
     pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
     pvd_->set_run_id(run_id_);
@@ -43,6 +44,7 @@ std::vector<std::string> RunOutput::csv_columns() const {
   if (scene_.poiseuille) c.insert(c.end(), {"tstar", "poiseuille_eps"});
   if (scene_.interface) c.insert(c.end(), {"bubble_y", "spike_y", "upper_density_mean", "upper_density_rms"});
   if (ExactVelocity(scene_.exact_velocity).enabled()) c.insert(c.end(), {"velocity_l1_relative", "peak_speed_error"});
+  if (steady_.enabled()) c.push_back("steady_rate");
   return c;
 }
 
@@ -57,10 +59,13 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   last_divergence_ = divergence_rms(f, y + L.vel(0), L.dim == 2 ? y + L.vel(1) : nullptr);
   std::vector<double> row = {t, stats.last_step, static_cast<double>(stats.steps), last_.kinetic_energy,
                              last_.max_speed, last_.cv, last_.density_mean, last_.density_rms};
+  SteadySample sample{t, last_.kinetic_energy, {}};
   if (scene_.ghia_re) {
     const GhiaErrors g = ghia_errors(f, scene_.ghia_re, scene_.min[0], scene_.min[1],
                                      scene_.max[0] - scene_.min[0], lid_speed(scene_), scene_.spacing);
     row.insert(row.end(), {g.u_linf, g.u_rms, g.v_linf, g.v_rms});
+    sample.centreline = g.u_sph;
+    sample.centreline.insert(sample.centreline.end(), g.v_sph.begin(), g.v_sph.end());
     case_metrics_.set("ghia_u_linf", g.u_linf).set("ghia_u_rms", g.u_rms);
     case_metrics_.set("ghia_v_linf", g.v_linf).set("ghia_v_rms", g.v_rms);
     std::vector<std::vector<double>> prof;
@@ -104,6 +109,10 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     const ExactVelocityErrors e = exact.errors(f);
     row.insert(row.end(), {e.l1_relative, e.peak_speed_error});
     case_metrics_.set("velocity_l1_relative", e.l1_relative).set("peak_speed_error", e.peak_speed_error);
+  }
+  if (steady_.enabled()) {
+    if (steady_.add(std::move(sample)) && steady_time_ < 0) steady_time_ = t;
+    row.push_back(steady_.rate());
   }
   if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
     const double* p = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
@@ -218,6 +227,13 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("derived", params);
   Json automatic = Json::object();  // the keys given as "auto" and the values their rules chose
   for (const auto& [key, value] : scene_.automatic) automatic.set(key, value);
+  if (steady_.enabled()) {  // time.steady_tolerance: whether and when the run stopped at steady state
+    Json ss = Json::object();
+    ss.set("tolerance", scene_.steady_tolerance).set("window", scene_.steady_window);
+    ss.set("reached", steady_time_ >= 0).set("time", steady_time_ >= 0 ? Json(steady_time_) : Json());
+    ss.set("rate", steady_.rate());
+    j.set("steady_state", ss);
+  }
   j.set("resolved", automatic);
   j.set("resolved_scene", scene_.resolved_toml);
   write_json_atomic(scene_.directory + "/summary.json", j);

@@ -7,6 +7,7 @@
 #include "run/setup.hpp"
 #include "run/simulation.hpp"
 #include "diagnostics/flow_metrics.hpp"
+#include "diagnostics/steady_state.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/summary_json.hpp"
@@ -27,6 +28,9 @@ class RunOutput {
   // Writes summary.json (also after a failure: status "failed" with the diagnosis). Throws OutputError.
   void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
               long wall_reflections, long neighbor_rebuilds);
+  // time.steady_tolerance: the flow was steady at the latest output time (diagnostics/steady_state.hpp).
+  bool steady() const { return steady_.steady(); }
+  double steady_rate() const { return steady_.rate(); }
   // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
   void resume(const OutputHistory& earlier);
   // method.reorder_every: re-sorts that changed the order, and their time (summary.json).
@@ -48,6 +52,8 @@ class RunOutput {
   double last_divergence_ = 0;  // r.m.s. of D u at the last output (projection/divergence_operator.hpp)
   FlowMetrics last_;
   Json case_metrics_ = Json::object();
+  SteadyStateMonitor steady_;
+  double steady_time_ = -1;  // the output time at which the flow was found steady (-1: not yet)
   double eps_max_window_ = 0;  // Poiseuille: max eps for t* in [0.5, 2]
   double output_seconds_ = 0, diagnostic_seconds_ = 0;
   long reorders_ = -1;  // -1: re-sorting off

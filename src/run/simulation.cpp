@@ -73,6 +73,12 @@ void print_run_header(const Scene& scene, const Model& model) {
   std::printf("  integrator %s, %s, end time %g\n", method.c_str(),
               scene.dt > 0 ? ("fixed dt " + std::to_string(scene.dt)).c_str() : "adaptive dt (stability limited)",
               scene.end);
+  if (scene.steady_tolerance > 0) {  // diagnostics/steady_state.hpp
+    char window[64] = "the latest output interval";
+    if (scene.steady_window > 0) std::snprintf(window, sizeof window, "the last %g of simulated time", scene.steady_window);
+    std::printf("  stops at steady state: change rate of the kinetic energy%s below %g per unit time over %s\n",
+                scene.ghia_re ? " and the Ghia centreline velocities" : "", scene.steady_tolerance, window);
+  }
   std::printf("  terms:");
   for (const auto& t : model.terms) std::printf(" %s", t.c_str());
   std::printf("\n  output: %s\n", scene.directory.c_str());
@@ -213,6 +219,11 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
       diag_evals += rhs.evaluations() - before;
       progress.frame(t, st.steps, dt_max);
       ++frame;
+      if (out.steady() && t < scene.end) {  // time.steady_tolerance: end here as at time.end
+        result.steady_time = t;
+        result.steady_rate = out.steady_rate();
+        break;
+      }
       checkpoints.at(t, integrator, rhs, frame, reflections);
     }
     checkpoints.at_end(t, integrator, frame, reflections);

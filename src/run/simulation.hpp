@@ -21,6 +21,8 @@ struct RunResult {
   std::string message;
   bool interrupted = false;  // SIGHUP/SIGINT/SIGQUIT/SIGTERM: exit code 128 + signal, checkpoint written
   std::string checkpoint;    // the last checkpoint written ("" if none)
+  double steady_time = -1;   // time.steady_tolerance: the output time at which the run stopped at steady state
+  double steady_rate = 0;    // the steady-state change rate there (diagnostics/steady_state.hpp)
 };
 
 // Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up (also:

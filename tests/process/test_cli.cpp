@@ -66,6 +66,8 @@ TEST_CASE("cli: every malformed scene in tests/bad_scenes exits 2 with one line 
       {"one_d_with_top", "boundary.top"},        {"too_many_particles", "fluid.spacing"},
       {"unknown_boundary_kind", "boundary.left.kind"}, {"unknown_root_key", "foo"},
       {"zero_cfl", "time.cfl"},
+      {"negative_steady_tolerance", "time.steady_tolerance"}, {"negative_steady_window", "time.steady_window"},
+      {"steady_tolerance_without_output", "time.steady_tolerance"},
   };
   int seen = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(ARKSPH_SOURCE_DIR) / "tests/bad_scenes")) {
@@ -80,7 +82,7 @@ TEST_CASE("cli: every malformed scene in tests/bad_scenes exits 2 with one line 
     CHECK(o.err.find(expected_key.at(stem)) != std::string::npos);
     ++seen;
   }
-  CHECK(seen >= 37);
+  CHECK(seen >= 40);
 }
 
 TEST_CASE("cli: bad options and missing files exit 2 with one line") {

@@ -29,14 +29,13 @@ inline double value_of(std::uint64_t id, int field, int version) {
   return static_cast<double>(id % 1000) * 0.001 + field + 10.0 * version;
 }
 
-// n particles per rank at uniform random positions in the domain box widened by `spill` on every
-// side (points beyond a periodic side test the wrap), global ids rank * n .. rank * n + n - 1.
-inline ParticleFields random_particles(const Communicator& comm, const Domain& d, std::size_t n, double spill,
-                                       unsigned seed) {
+// n particles per rank at uniform random positions in the domain box, global ids
+// rank * n .. rank * n + n - 1 (distinct also when n differs between the ranks but grows with rank).
+inline ParticleFields random_particles(const Communicator& comm, const Domain& d, std::size_t n, unsigned seed) {
   ParticleFields p(2, N_FIELDS);
   std::mt19937_64 rng(seed * 7919u + static_cast<unsigned>(comm.rank()));
-  std::uniform_real_distribution<double> ux(d.box.lo[0] - spill, d.box.hi[0] + spill);
-  std::uniform_real_distribution<double> uy(d.box.lo[1] - spill, d.box.hi[1] + spill);
+  std::uniform_real_distribution<double> ux(d.box.lo[0], d.box.hi[0]);
+  std::uniform_real_distribution<double> uy(d.box.lo[1], d.box.hi[1]);
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint64_t id = static_cast<std::uint64_t>(comm.rank()) * n + i;
     p.id.push_back(id);

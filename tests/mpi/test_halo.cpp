@@ -62,7 +62,7 @@ TEST_CASE("halo: equals the brute-force halo from all particles; the update move
     CAPTURE(s.py);
     CAPTURE(s.ly);
     const Domain dom = unit_domain(s.lx, s.ly, s.px, s.py);
-    ParticleFields p = random_particles(comm, dom, 600 + 100 * static_cast<std::size_t>(comm.rank()), 0.0, 21);
+    ParticleFields p = random_particles(comm, dom, 600 + 100 * static_cast<std::size_t>(comm.rank()), 21);
     const Decomposition d = decompose(comm, CellGrid(dom, s.cutoff), p);
     migrate(comm, d, p);
     HaloExchange exchange;
@@ -119,7 +119,7 @@ TEST_CASE("halo: equals the brute-force halo from all particles; the update move
 TEST_CASE("halo: a cut-off as long as a period is refused") {
   const Communicator comm;
   const Domain dom = unit_domain(3.0, 0.3, true, true);
-  ParticleFields p = random_particles(comm, dom, 50, 0.0, 2);
+  ParticleFields p = random_particles(comm, dom, 50, 2);
   const Decomposition d = decompose(comm, CellGrid(dom, 0.1), p);
   migrate(comm, d, p);
   HaloExchange exchange;

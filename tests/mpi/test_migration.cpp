@@ -50,7 +50,7 @@ TEST_CASE("migration: each particle on the rank whose box holds it, none lost or
     CAPTURE(s.py);
     const Domain dom = unit_domain(3.0, 2.0, s.px, s.py);
     const std::size_t n = 400 + 150 * static_cast<std::size_t>(comm.rank());
-    ParticleFields p = random_particles(comm, dom, n, 0.0, 11);
+    ParticleFields p = random_particles(comm, dom, n, 11);
     if (s.spill > 0) {  // push some particles beyond the periodic sides (up to a period and a half away)
       std::mt19937_64 rng(99 + static_cast<unsigned>(comm.rank()));
       std::uniform_real_distribution<double> u(-1.5, 1.5);
@@ -65,7 +65,7 @@ TEST_CASE("migration: each particle on the rank whose box holds it, none lost or
     const Census after = census(comm, p);
     CHECK(after.count == before.count);
     CHECK(after.checksum == before.checksum);
-    // The exact set: every id r * n_r-offset + i once.
+    // The exact set: rank r's ids r * n_r + i, i < n_r, each once.
     const std::vector<Record> all = gather_all(comm, p);
     std::vector<std::uint64_t> expected;
     for (int r = 0; r < comm.size(); ++r)

@@ -96,7 +96,7 @@ TEST_CASE("rcb: the same boxes on every rank from the summed counts, balanced wi
   const Domain dom = unit_domain(3.0, 2.0, true, true);
   const CellGrid g(dom, 0.25);
   // Uneven per rank: rank r has 300 + 200 r particles, rank 0's squeezed into the left half.
-  ParticleFields p = random_particles(comm, dom, 300 + 200 * static_cast<std::size_t>(comm.rank()), 0.0, 3);
+  ParticleFields p = random_particles(comm, dom, 300 + 200 * static_cast<std::size_t>(comm.rank()), 3);
   if (comm.rank() == 0)
     for (auto& x : p.field[X]) x *= 0.5;
   std::vector<std::int64_t> counts = count_per_cell(g, p);

@@ -105,8 +105,9 @@ int cmd_batch(int argc, char** argv) {
                        "; remove it from the sweep's [[vary]] or from --set");
   for (auto& run : sweep.runs) run.sets.insert(run.sets.end(), extra_sets.begin(), extra_sets.end());
   sweep.common_sets.insert(sweep.common_sets.end(), extra_sets.begin(), extra_sets.end());
+  opt.launcher_ranks = true;  // under mpirun -n K: K processes share the runs (study/batch_ranks.hpp)
   const BatchResult res = run_batch(sweep, opt);
-  return res.failed > 0 ? 3 : 0;
+  return res.failed > 0 && !res.partial ? 3 : 0;  // rank 0 reports for all (a nonzero rank > 0 would end the launch)
 }
 
 int cmd_study(int argc, char** argv) {

@@ -22,7 +22,9 @@ const char* kBatchUsage =
     "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped.\n"
     "  --set adds an override to every run (after the sweep's own set list); a varied key is refused (exit 2).\n"
     "  Results: <out>/batch.csv and <out>/batch.json. Exit 0 if every run finished ok, 3 otherwise,\n"
-    "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n";
+    "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n"
+    "  Under an MPI launcher (mpirun -n K arksph batch ...) the K processes share the runs (rank r runs\n"
+    "  those with index r mod K, N at a time each); rank 0 writes the results and gives the exit code.\n";
 
 const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"

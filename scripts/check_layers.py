@@ -10,7 +10,7 @@ import re
 import sys
 
 # Bottom to top.
-LAYERS = ["core", "kernels", "neighbors", "boundary", "rhs", "integrate", "projection",
+LAYERS = ["core", "kernels", "neighbors", "boundary", "parallel", "rhs", "integrate", "projection",
           "diagnostics", "io", "run", "study", "app"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 

@@ -22,7 +22,9 @@ const char* kBatchUsage =
     "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped.\n"
     "  --set adds an override to every run (after the sweep's own set list); a varied key is refused (exit 2).\n"
     "  Results: <out>/batch.csv and <out>/batch.json. Exit 0 if every run finished ok, 3 otherwise,\n"
-    "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n";
+    "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n"
+    "  Under an MPI launcher (mpirun -n K arksph batch ...) the K processes share the runs (rank r runs\n"
+    "  those with index r mod K, N at a time each); rank 0 writes the results and gives the exit code.\n";
 
 const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
@@ -105,8 +107,9 @@ int cmd_batch(int argc, char** argv) {
                        "; remove it from the sweep's [[vary]] or from --set");
   for (auto& run : sweep.runs) run.sets.insert(run.sets.end(), extra_sets.begin(), extra_sets.end());
   sweep.common_sets.insert(sweep.common_sets.end(), extra_sets.begin(), extra_sets.end());
+  opt.launcher_ranks = true;  // under mpirun -n K: K processes share the runs (study/batch_ranks.hpp)
   const BatchResult res = run_batch(sweep, opt);
-  return res.failed > 0 ? 3 : 0;
+  return res.failed > 0 && !res.partial ? 3 : 0;  // rank 0 reports for all (a nonzero rank > 0 would end the launch)
 }
 
 int cmd_study(int argc, char** argv) {

@@ -13,10 +13,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <thread>
 
 #include "run/interrupt.hpp"
+#include "study/batch_ranks.hpp"
 #include "run/output_folder.hpp"
 #include "core/errors.hpp"
 #include "io/input_file.hpp"
@@ -94,6 +96,13 @@ pid_t launch(const std::string& exe, const std::vector<std::string>& args, const
   return pid;
 }
 
+// How long the ranks of a launch wait for each other to appear (not for their runs to finish).
+constexpr double kJoinTimeoutSeconds = 120;
+
+std::string rank_tag(const LauncherRanks& ranks) {
+  return ranks.size > 1 ? " rank " + std::to_string(ranks.rank) + "/" + std::to_string(ranks.size) : std::string();
+}
+
 std::string status_from_exit(int code, int signal) {
   if (signal) return "crashed";
   switch (code) {
@@ -113,7 +122,12 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
   const auto start = clock::now();
   const std::string out = opt.output.empty() ? sw.output : opt.output;
   const std::string exe = opt.executable.empty() ? std::string("/proc/self/exe") : opt.executable;
-  int jobs = opt.jobs > 0 ? opt.jobs : sw.jobs > 0 ? sw.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  const LauncherRanks ranks = opt.launcher_ranks ? launcher_ranks_from_environment() : LauncherRanks{};
+  const auto mine = [&](std::size_t i) { return static_cast<int>(i % static_cast<std::size_t>(ranks.size)) == ranks.rank; };
+  // Without a job count, the cores of the host shared by the ranks on it.
+  int jobs = opt.jobs > 0    ? opt.jobs
+             : sw.jobs > 0   ? sw.jobs
+                             : static_cast<int>(std::thread::hardware_concurrency()) / ranks.local_size;
   if (jobs < 1) jobs = 1;
 
   // Every run's scene must read: a bad value is a bad sweep (exit 2) before anything runs.
@@ -126,7 +140,11 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     }
   }
   std::error_code ec;
-  const OutputFolder folder(out, sw.source);  // one batch per folder at a time (exit 2 naming the pid)
+  // One batch per folder at a time (exit 2 naming the pid); the ranks > 0 of a launch join rank 0's.
+  std::unique_ptr<OutputFolder> folder;
+  if (ranks.rank == 0) folder = std::make_unique<OutputFolder>(out, sw.source);
+  if (ranks.size > 1 && ranks.rank == 0) publish_batch_group(out, ranks);
+  if (ranks.rank > 0) join_batch_group(out, ranks, kJoinTimeoutSeconds);
 
   BatchResult res;
   res.runs.resize(sw.runs.size());
@@ -136,6 +154,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     r.name = sw.runs[i].name;
     r.dir = (fs::path(out) / r.name).string();
     r.values = sw.runs[i].values;
+    if (!mine(i)) continue;  // another rank's run
     const std::string cmd = joined(child_args(sw, sw.runs[i], r.dir));
     if (slurp(fs::path(r.dir) / "batch_run.txt") == cmd && read_summary(r) && r.status == "ok") {
       r.skipped = true;
@@ -145,12 +164,13 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     }
   }
 
-  const std::size_t total = sw.runs.size();
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < sw.runs.size(); ++i) total += mine(i);
   std::size_t done = res.skipped, next = 0;
   std::map<pid_t, std::size_t> running;
   if (!opt.quiet && res.skipped)
-    std::fprintf(stderr, "batch: %d of %zu runs already finished (skipped), %zu to run, %d at a time\n", res.skipped,
-                 total, todo.size(), jobs);
+    std::fprintf(stderr, "batch%s: %d of %zu runs already finished (skipped), %zu to run, %d at a time\n",
+                 rank_tag(ranks).c_str(), res.skipped, total, todo.size(), jobs);
   install_interrupt_handlers();
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && static_cast<int>(running.size()) < jobs && !pending_interrupt()) {
@@ -180,12 +200,28 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     if (r.status != "ok") ++res.failed;
     ++done;
     if (!opt.quiet)
-      std::fprintf(stderr, "batch: [%zu/%zu] %-50s %-9s %6.2f s  (failed %d, running %zu)\n", done, total,
-                   r.name.c_str(), r.status.c_str(), r.wall_seconds, res.failed, running.size());
+      std::fprintf(stderr, "batch%s: [%zu/%zu] %-50s %-9s %6.2f s  (failed %d, running %zu)\n", rank_tag(ranks).c_str(),
+                   done, total, r.name.c_str(), r.status.c_str(), r.wall_seconds, res.failed, running.size());
   }
   for (std::size_t k = next; k < todo.size(); ++k) {  // never launched (interrupt)
     res.runs[todo[k]].status = "not_run";
     ++res.failed;
+  }
+  if (ranks.rank > 0) {  // rank 0 combines
+    write_rank_rows(out, ranks, res);
+    res.partial = true;
+    return res;
+  }
+  if (ranks.size > 1) {
+    for (const int r : collect_rank_rows(out, ranks, res, kJoinTimeoutSeconds))
+      for (std::size_t i = static_cast<std::size_t>(r); i < res.runs.size(); i += static_cast<std::size_t>(ranks.size))
+        res.runs[i].status = "not_run";
+    res.failed = res.skipped = 0;
+    for (const auto& r : res.runs) {
+      res.failed += r.status != "ok";
+      res.skipped += r.skipped;
+    }
+    total = res.runs.size();
   }
   res.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
   write_batch_csv(sw, res, (fs::path(out) / "batch.csv").string());

@@ -7,6 +7,9 @@
 // <output>/batch.json: each run's --set values, status, exit code, wall time, steps and its
 // summary.json metrics. One progress line per finished run on stderr. The batch locks its folder
 // like a run does (run/output_folder.hpp): a second batch into the same folder exits 2.
+// With `launcher_ranks`, a batch started as K processes by an MPI launcher spreads its runs over
+// them (study/batch_ranks.hpp): rank r runs the runs with index ≡ r (mod K), rank 0 writes the
+// combined files.
 #pragma once
 #include <string>
 #include <vector>
@@ -20,6 +23,7 @@ struct BatchOptions {
   std::string output;       // "" : the sweep's output folder
   std::string executable;   // the arksph binary ("" : /proc/self/exe)
   bool quiet = false;       // no progress lines
+  bool launcher_ranks = false;  // share the runs with the other processes of an MPI launch (if any)
 };
 
 struct BatchRunResult {
@@ -37,6 +41,7 @@ struct BatchResult {
   std::vector<BatchRunResult> runs;
   int failed = 0, skipped = 0;
   double wall_seconds = 0;
+  bool partial = false;  // a rank > 0 of a launch: its own runs only, no combined files written
 };
 
 // Validates every run's scene in-process first (a bad value throws InputError before anything

@@ -1,0 +1,128 @@
+// Halo exchange (src/parallel/halo.hpp) against a brute-force answer from every rank's particles,
+// and the halo update.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "mpi_test_support.hpp"
+#include "parallel/halo.hpp"
+#include "parallel/migration.hpp"
+
+using namespace arksph::parallel;
+using namespace arksph::parallel::testing;
+
+namespace {
+
+using Copy = std::tuple<std::uint64_t, double, double>;  // id, shifted position
+
+// Every (particle, period shift) within `cutoff` of this rank's box, its own unshifted particles
+// excepted, from all particles of every rank: the halo this rank must receive.
+std::vector<Copy> brute_force_halo(const Communicator& comm, const Decomposition& d, const std::vector<Record>& all,
+                                   double cutoff) {
+  const Domain& dom = d.grid().domain();
+  const Box box = d.box(comm.rank());
+  std::vector<Copy> out;
+  for (const Record& rec : all) {
+    const double x0[2] = {rec.f[X], rec.f[Y]};
+    const bool mine = d.owner(x0) == comm.rank();
+    for (int kx = -1; kx <= 1; ++kx)
+      for (int ky = -1; ky <= 1; ++ky) {
+        if ((kx != 0 && !dom.periodic[0]) || (ky != 0 && !dom.periodic[1]) || (mine && kx == 0 && ky == 0)) continue;
+        const double sx = kx == 0 ? 0.0 : kx * (dom.box.hi[0] - dom.box.lo[0]);
+        const double sy = ky == 0 ? 0.0 : ky * (dom.box.hi[1] - dom.box.lo[1]);
+        const double x = rec.f[X] + sx, y = rec.f[Y] + sy;
+        const double cx = std::clamp(x, box.lo[0], box.hi[0]), cy = std::clamp(y, box.lo[1], box.hi[1]);
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) < cutoff * cutoff) out.emplace_back(rec.id, x, y);
+      }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<Copy> copies(const ParticleFields& halo) {
+  std::vector<Copy> out;
+  for (std::size_t k = 0; k < halo.size(); ++k) out.emplace_back(halo.id[k], halo.field[X][k], halo.field[Y][k]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("halo: equals the brute-force halo from all particles; the update moves the new values") {
+  const Communicator comm;
+  struct Setup {
+    bool px, py;
+    double lx, ly, cutoff;
+  };
+  // The last: a domain one cell high, periodic: every box spans it, so self-images along y.
+  for (const Setup s : {Setup{true, true, 3.0, 2.0, 0.25}, Setup{false, false, 3.0, 2.0, 0.25},
+                        Setup{true, false, 3.0, 2.0, 0.35}, Setup{true, true, 3.0, 0.3, 0.2}}) {
+    CAPTURE(s.px);
+    CAPTURE(s.py);
+    CAPTURE(s.ly);
+    const Domain dom = unit_domain(s.lx, s.ly, s.px, s.py);
+    ParticleFields p = random_particles(comm, dom, 600 + 100 * static_cast<std::size_t>(comm.rank()), 21);
+    const Decomposition d = decompose(comm, CellGrid(dom, s.cutoff), p);
+    migrate(comm, d, p);
+    HaloExchange exchange;
+    ParticleFields halo;
+    exchange.exchange(comm, d, p, s.cutoff, halo);
+
+    // (b) the halo as a set of (id, shifted position)
+    const std::vector<Record> all = gather_all(comm, p);
+    const std::vector<Copy> expected = brute_force_halo(comm, d, all, s.cutoff);
+    const std::vector<Copy> got = copies(halo);
+    CHECK(got.size() == expected.size());
+    CHECK(on_all_ranks(comm, got == expected));
+    CHECK(halo.size() == exchange.received());
+    CHECK(comm.sum(static_cast<std::int64_t>(exchange.sent())) == comm.sum(static_cast<std::int64_t>(exchange.received())));
+    if (comm.size() > 1 || s.px || s.py) CHECK(comm.sum(static_cast<std::int64_t>(halo.size())) > 0);
+    bool fields_ok = true;
+    for (std::size_t k = 0; k < halo.size(); ++k)
+      for (int f = U; f < N_FIELDS; ++f) fields_ok = fields_ok && halo.field[static_cast<std::size_t>(f)][k] == value_of(halo.id[k], f, 0);
+    CHECK(on_all_ranks(comm, fields_ok));
+
+    // (c) update: new densities and positions (each particle moved by a small id-dependent step,
+    // no migration); the velocities are not in the list and must keep their old values.
+    const ParticleFields old_halo = halo;
+    std::vector<double> old_x = p.field[X], old_y = p.field[Y];
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      p.field[X][i] += 1e-3 * static_cast<double>(p.id[i] % 7);
+      p.field[Y][i] -= 1e-3 * static_cast<double>(p.id[i] % 5);
+      p.field[RHO][i] = value_of(p.id[i], RHO, 1);
+      p.field[U][i] = value_of(p.id[i], U, 1);
+    }
+    exchange.update(comm, p, {X, Y, RHO}, halo);
+    const std::vector<Record> moved = gather_all(comm, p);
+    auto find = [&](std::uint64_t id) {
+      return *std::lower_bound(moved.begin(), moved.end(), id, [](const Record& r, std::uint64_t v) { return r.id < v; });
+    };
+    auto find_old = [&](std::uint64_t id) {
+      return *std::lower_bound(all.begin(), all.end(), id, [](const Record& r, std::uint64_t v) { return r.id < v; });
+    };
+    bool update_ok = halo.size() == old_halo.size();
+    for (std::size_t k = 0; update_ok && k < halo.size(); ++k) {
+      const Record now = find(halo.id[k]), before = find_old(halo.id[k]);
+      // The shift of this copy, a whole number of periods (0 on the wall axes).
+      const double sx = old_halo.field[X][k] - before.f[X], sy = old_halo.field[Y][k] - before.f[Y];
+      const double kx = std::round(sx / dom.period(0)), ky = std::round(sy / dom.period(1));
+      const double ex = now.f[X] + (kx == 0 ? 0.0 : kx * dom.period(0));
+      const double ey = now.f[Y] + (ky == 0 ? 0.0 : ky * dom.period(1));
+      update_ok = halo.id[k] == old_halo.id[k] && halo.field[X][k] == ex && halo.field[Y][k] == ey &&
+                  halo.field[RHO][k] == value_of(halo.id[k], RHO, 1) && halo.field[U][k] == value_of(halo.id[k], U, 0);
+    }
+    CHECK(on_all_ranks(comm, update_ok));
+  }
+}
+
+TEST_CASE("halo: a cut-off as long as a period is refused") {
+  const Communicator comm;
+  const Domain dom = unit_domain(3.0, 0.3, true, true);
+  ParticleFields p = random_particles(comm, dom, 50, 2);
+  const Decomposition d = decompose(comm, CellGrid(dom, 0.1), p);
+  migrate(comm, d, p);
+  HaloExchange exchange;
+  ParticleFields halo;
+  CHECK_THROWS_AS(exchange.exchange(comm, d, p, 0.3, halo), std::invalid_argument);
+}

@@ -60,6 +60,7 @@ const std::vector<std::string> kScenes = {
     "cases/spin_down/scene.toml",          "cases/sweeps/taylor_green_small.toml",
     "cases/spin_down/defaults.toml",       "cases/taylor_green/scene.toml",
     "cases/hydrostatic_tank/scene.toml",   "cases/cavity_re10000/scene.toml",
+    "cases/cavity_re1000/defaults.toml",
 };
 
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
@@ -158,6 +159,7 @@ TEST_CASE("case: every scene file under cases/ is listed here") {
 
 TEST_CASE(CASE_TEST("cavity_re100")) { check_case("cases/cavity_re100/scene.toml"); }
 TEST_CASE(CASE_TEST("cavity_re1000")) { check_case("cases/cavity_re1000/scene.toml"); }
+TEST_CASE(CASE_TEST("cavity_re1000 defaults")) { check_case("cases/cavity_re1000/defaults.toml"); }
 TEST_CASE(CASE_TEST("hydrostatic_1d")) { check_case("cases/hydrostatic_1d/scene.toml"); }
 // The case is the Pozorski-Wawrenczuk correction, a step of the projection schemes.
 TEST_CASE(CASE_TEST("perturbed_lattice")) {

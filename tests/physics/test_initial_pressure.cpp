@@ -10,55 +10,19 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "io/json_reader.hpp"
-#include "io/scene_reader.hpp"
-#include "run/simulation.hpp"
-#include "test_support.hpp"
+#include "vortex_error.hpp"
 
 using namespace arksph;
 
 namespace {
-const char* kVortex = R"toml(
-[scene]
-name = "pressure_start_vortex"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[boundary]
-left = { kind = "periodic" }
-right = { kind = "periodic" }
-bottom = { kind = "periodic" }
-top = { kind = "periodic" }
-[fluid]
-spacing = 0.04
-viscosity = 0.01
-[initial]
-velocity = ["-cos(2*pi*x)*sin(2*pi*y)", "sin(2*pi*x)*cos(2*pi*y)"]
-[method]
-scheme = "wcsph"
-sound_speed = 10
-regularisation = "none"
-density_diffusion = "none"
-[time]
-end = 0.1
-[metrics]
-exact_velocity = ["-cos(2*pi*x)*sin(2*pi*y)*exp(-8*pi^2*0.01*t)", "sin(2*pi*x)*cos(2*pi*y)*exp(-8*pi^2*0.01*t)"]
-)toml";
+// wcsph at c = 10 without regularisation, to t = 0.1.
+const std::vector<std::string> kPlainWcsph = {"method.scheme=\"wcsph\"", "method.regularisation=\"none\"",
+                                              "method.density_diffusion=\"none\"", "time.end=0.1"};
 
 double l1_error(const testing::ScratchDir& dir, const std::string& name, const std::vector<std::string>& extra) {
-  const std::string out = dir / name;
-  std::vector<std::string> sets = {"output.directory=\"" + out + "\""};
+  std::vector<std::string> sets = kPlainWcsph;
   sets.insert(sets.end(), extra.begin(), extra.end());
-  std::ostringstream warnings;
-  const Scene scene = read_scene_text(kVortex, "<test>", sets, warnings);
-  RunOptions opt;
-  opt.quiet = true;
-  opt.write_frames = false;
-  REQUIRE(run_simulation(scene, opt).exit_code == 0);
-  const JsonValue j = read_json_file(out + "/summary.json");
-  const JsonValue* v = j.find("metrics")->find("velocity_l1_relative");
-  REQUIRE(v != nullptr);
-  return v->number;
+  return testing::vortex_l1_error(dir, name, sets);
 }
 }  // namespace
 
@@ -78,7 +42,9 @@ TEST_CASE("initial.pressure: a pressure below the Tait floor or a bad expression
   std::ostringstream warnings;
   for (const std::string bad : {"initial.pressure=\"-100\"", "initial.pressure=\"cos(z)\""}) {
     CAPTURE(bad);
-    const Scene scene = read_scene_text(kVortex, "<test>", {bad, "time.end=0.001"}, warnings);
+    std::vector<std::string> sets = kPlainWcsph;
+    sets.insert(sets.end(), {bad, "time.end=0.001"});
+    const Scene scene = read_scene_text(testing::kTaylorGreenVortex25, "<test>", sets, warnings);
     RunOptions opt;
     opt.quiet = true;
     opt.write_frames = false;

@@ -124,6 +124,9 @@ struct Scene {
   // The keys read as "auto" and the values their rules chose (Param::automatic), in catalog order:
   // printed in the run header and written into summary.json ("resolved").
   std::vector<std::pair<std::string, std::string>> automatic;
+  // Those of them this run does not use (a part not selected, another scheme's key: io/key_use.hpp);
+  // the run header leaves them out.
+  std::vector<std::string> automatic_unused;
 
   // The resolved scene as TOML text (all keys, "auto" replaced), written into summary.json.
   std::string resolved_toml;

@@ -18,6 +18,7 @@
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
 #include "io/input_file.hpp"
+#include "io/key_use.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
@@ -246,10 +247,10 @@ void read_phases(const Section& root, Scene& s) {
 
 // Selected parts must apply to the scheme; keys of other schemes give a warning when set.
 void check_schemes(const std::map<std::string, Section>& sections, const Scene& s,
-                   const std::vector<const Param*>& automatic) {
+                   const std::vector<const CatalogKey*>& automatic) {
   for (const CatalogKey& k : scene_catalog()) {
     const Param& p = k.param;
-    if (p.custom || std::find(automatic.begin(), automatic.end(), &p) != automatic.end()) continue;
+    if (p.custom || std::find(automatic.begin(), automatic.end(), &k) != automatic.end()) continue;
     const auto dot = p.key.find('.');
     const Section& sec = sections.at(p.key.substr(0, dot));
     const std::string name = p.key.substr(dot + 1);
@@ -279,14 +280,18 @@ bool left_automatic(const Section& sec, const std::string& name, const Param& p)
 // Each key left at "auto" takes the value its rule gives for this scene (text for a choice, "true"
 // or "false" for a flag). A rule that reads another automatic key applies that key's rule itself
 // when it finds "auto" there, so their order does not matter.
-void resolve_automatic(Scene& s, const std::vector<const Param*>& automatic) {
+void resolve_automatic(Scene& s, const std::vector<const CatalogKey*>& automatic) {
   s.automatic.clear();
-  for (const Param* p : automatic) {
-    const std::string value = p->automatic(s);
-    if (p->type == Param::Type::boolean) p->store(s, value == "true");
-    else p->store(s, value);
-    s.automatic.emplace_back(p->key, value);
+  for (const CatalogKey* k : automatic) {
+    const Param& p = k->param;
+    const std::string value = p.automatic(s);
+    if (p.type == Param::Type::boolean) p.store(s, value == "true");
+    else p.store(s, value);
+    s.automatic.emplace_back(p.key, value);
   }
+  s.automatic_unused.clear();  // once every choice is made: a rule's choice may select a part
+  for (const CatalogKey* k : automatic)
+    if (!key_in_use(*k, s)) s.automatic_unused.push_back(k->param.key);
 }
 
 void check_method(const Section& m, Scene& s) {
@@ -335,14 +340,14 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
     if (table != "phase") sections.emplace(table, root.section(table, keys_of_table(table)));
   Scene s;
   s.source = source_name;
-  std::vector<const Param*> automatic;  // keys left at "auto", in catalog order
+  std::vector<const CatalogKey*> automatic;  // keys left at "auto", in catalog order
   for (const CatalogKey& k : scene_catalog()) {
     if (k.param.key == "domain.max") read_domain(sections.at("domain"), s);  // the box before the rest
     if (k.param.custom) continue;
     const auto dot = k.param.key.find('.');
     const Section& sec = sections.at(k.param.key.substr(0, dot));
     const std::string name = k.param.key.substr(dot + 1);
-    if (left_automatic(sec, name, k.param)) automatic.push_back(&k.param);
+    if (left_automatic(sec, name, k.param)) automatic.push_back(&k);
     else k.param.store(s, read_value(sec, name, k.param, s));
   }
   if (s.name.empty()) sections.at("scene").fail("name", "must not be empty");

@@ -4,6 +4,7 @@
 //   -> checkpoint.h5, summary.json. A restart (options.restart) starts the same loop from a checkpoint.
 #include "run/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -59,12 +60,11 @@ void print_run_header(const Scene& scene, const Model& model) {
   std::printf("arksph: scene '%s' (%s)\n", scene.name.c_str(), scene.source.c_str());
   std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s\n", scene.scheme.c_str(),
               model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str());
-  if (!scene.automatic.empty()) {  // the keys given as "auto" and what their rules chose
-    std::printf("  auto:");
-    for (std::size_t i = 0; i < scene.automatic.size(); ++i)
-      std::printf("%s %s = %s", i ? "," : "", scene.automatic[i].first.c_str(), scene.automatic[i].second.c_str());
-    std::printf("\n");
-  }
+  std::string chosen;  // the keys given as "auto" that this run uses, and what their rules chose
+  for (const auto& [key, value] : scene.automatic)
+    if (std::find(scene.automatic_unused.begin(), scene.automatic_unused.end(), key) == scene.automatic_unused.end())
+      chosen += (chosen.empty() ? " " : ", ") + key + " = " + value;
+  if (!chosen.empty()) std::printf("  auto:%s\n", chosen.c_str());
   if (model.sound_speed > 0) std::printf("  sound speed %.6g\n", model.sound_speed);
   if (model.reference_speed > 0) std::printf("  flow speed U %.6g (scale of the regularisation velocity)\n", model.reference_speed);
   if (model.projection && model.projection->constrained())

@@ -2,6 +2,7 @@
 // run records which keys those were (Scene::automatic), and an explicit value is used as given.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -103,6 +104,28 @@ TEST_CASE("auto: the correction solver") {
   const Scene s = read(kWalled, {"method.scheme=isph", "method.density_correction=pozorski_wawrenczuk"});
   CHECK(s.correction_solver == "newton");
   CHECK(chosen(s, "method.correction_solver") == "newton");
+}
+
+TEST_CASE("auto: the choices a run does not use are marked, the ones it uses are not") {
+  const auto unused = [](const Scene& s, const std::string& key) {
+    return std::find(s.automatic_unused.begin(), s.automatic_unused.end(), key) != s.automatic_unused.end();
+  };
+  const Scene w = read(kWalled, {"method.scheme=wcsph"});
+  CHECK(unused(w, "method.correction_solver"));  // the P-W part is not selected
+  CHECK(unused(w, "method.ppe_divergence"));     // a projection scheme's key
+  CHECK(unused(w, "method.ppe_pressure_level"));
+  CHECK_FALSE(unused(w, "method.density_diffusion"));
+  CHECK_FALSE(unused(w, "method.regularisation"));
+  CHECK_FALSE(unused(w, "method.density_mode"));
+  const Scene i = read(kWalled, {"method.scheme=isph"});
+  CHECK(unused(i, "method.correction_solver"));
+  CHECK(unused(i, "method.density_diffusion"));  // no part but "none" applies to isph
+  CHECK_FALSE(unused(i, "method.ppe_pressure_level"));
+  CHECK_FALSE(unused(i, "method.regularisation"));
+  const Scene pw = read(kWalled, {"method.scheme=isph-gpps", "method.density_correction=pozorski_wawrenczuk"});
+  CHECK_FALSE(unused(pw, "method.correction_solver"));
+  CHECK_FALSE(unused(pw, "method.ppe_divergence"));
+  for (const std::string& key : pw.automatic_unused) CHECK(!chosen(pw, key).empty());  // only "auto" keys
 }
 
 TEST_CASE("auto: an explicit value is used as given and not listed as chosen") {

@@ -93,6 +93,7 @@ struct Scene {
   double correction_threshold = 1e-3;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
   int correction_max_iterations = 1;   // pozorski_wawrenczuk: Poisson solves per step at most
   std::string correction_solver = "fixed_point";  // pozorski_wawrenczuk: "fixed_point" | "kinsol" | "newton"
+  double correction_relaxation = 1.0;  // pozorski_wawrenczuk with the constrained projection: kappa = this x U/h
 
   // [time]
   double end = 1.0;

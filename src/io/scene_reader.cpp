@@ -300,9 +300,6 @@ void check_method(const Section& m, Scene& s) {
     if (scheme_traits(s.scheme).grid)
       m.fail("projection", "\"constrained\" needs the particle Poisson equation: method.scheme = \"isph\" (got \"" +
                                s.scheme + "\")");
-    if (s.density_correction != "none")
-      m.fail("projection", "\"constrained\" does not combine with method.density_correction = \"" +
-                               s.density_correction + "\" (a position change after the step)");
     if (s.projection_points != "step")
       m.fail("projection", "\"constrained\" projects inside f: method.projection_points = \"" + s.projection_points +
                                "\" does not apply");

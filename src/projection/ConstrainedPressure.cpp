@@ -9,7 +9,7 @@
 
 namespace arksph {
 
-double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
+double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
   // U: the largest initial particle speed or wall speed; a fluid starting at rest with still walls
   // relaxes over the run (U = h / time.end).
   const ParticleSet& p = rhs.particles();
@@ -24,7 +24,11 @@ double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
     speed = std::max(speed, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
   const double h = rhs.kernel().h();
   if (!(speed > 0)) speed = h / scene.end;
-  return scene.constraint_relaxation * speed / h;
+  return speed / h;
+}
+
+double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
+  return scene.constraint_relaxation * flow_rate(scene, rhs);
 }
 
 ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
@@ -34,7 +38,10 @@ ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
       tolerance_(scene.ppe_tolerance),
       relaxation_(relaxation_rate(scene, rhs)),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
-      solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)) {}
+      solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)) {
+  if (scene.density_correction == "pozorski_wawrenczuk")
+    density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate(scene, rhs));
+}
 
 void ConstrainedPressure::forget_warm_start() {
   p_.clear();
@@ -113,6 +120,7 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
     ydot[L.vel(0) + a] -= gx_[a];
     if (v) ydot[L.vel(1) + a] -= gy_[a];
   }
+  if (density_) density_->add_velocity(f, ydot + L.pos(0), v ? ydot + L.pos(1) : nullptr);
   return rep;
 }
 

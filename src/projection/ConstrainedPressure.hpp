@@ -31,6 +31,9 @@
 // wall images reflect a*, which for a uniform g leaves a layer of sources along the walls that
 // C&R's mirrored P in G cannot balance.
 //
+// With method.density_correction = "pozorski_wawrenczuk" the correction is a velocity in dr/dt as well
+// (projection/density_relaxation.hpp), so positions stay inside the ODE.
+//
 // The exact orthogonal projection I - G (D G)^-1 D with G = -M^-1 D^T V (DivergenceOperator) is
 // idempotent, but D G decouples odd and even particles: on a perturbed lattice it has near-null
 // modes, and a constraint imposed through it moves the velocity by O(|u|) (docs/methods/isph.md).
@@ -40,13 +43,16 @@
 
 #include "core/scene.hpp"
 #include "projection/body_force_split.hpp"
+#include "projection/density_relaxation.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
 
-// alpha = method.constraint_relaxation x U / h, U the largest initial or wall speed.
+// U / h, U the largest initial or wall speed (h / time.end for a fluid at rest between still walls).
+double flow_rate(const Scene& scene, const RhsEvaluator& rhs);
+// alpha = method.constraint_relaxation x U / h.
 double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs);
 
 struct ConstraintReport {
@@ -64,6 +70,8 @@ class ConstrainedPressure {
   ConstraintReport project_velocity(double t, double* y);
   const std::vector<double>& pressure() const { return p_; }
   double relaxation() const { return relaxation_; }
+  // The P-W correction as a velocity inside f (method.density_correction), or null.
+  const DensityRelaxation* density_relaxation() const { return density_.get(); }
   std::string solver_name() const { return solver_->name(); }
   void forget_warm_start();
   void permute_particles(const std::vector<std::uint32_t>& from);
@@ -82,6 +90,7 @@ class ConstrainedPressure {
   double relaxation_;
   bool zero_min_level_;
   std::unique_ptr<PoissonSolver> solver_;
+  std::unique_ptr<DensityRelaxation> density_;
   PoissonSystem system_;
   std::vector<double> p_, solution_, div_, gx_, gy_, wx_, wy_, bx_, by_;
 };

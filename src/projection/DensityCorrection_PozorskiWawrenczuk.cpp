@@ -40,7 +40,11 @@ const Registry<Selected>& density_corrections() {
             .doc("correction solves per step at most (Szewc: 1)").to(&Scene::correction_max_iterations),
         choice("method.correction_solver", "auto").family("correction_solver")
             .doc("solver of the correction's Poisson problem; auto: newton")
-            .automatic(automatic_correction_solver).to(&Scene::correction_solver)},
+            .automatic(automatic_correction_solver).to(&Scene::correction_solver),
+        number("method.correction_relaxation", 1.0).in(above(0))
+            .doc("constrained projection: the correction is the velocity kappa dr inside f (dr of eqs. 57-58), "
+                 "kappa = this x U/h, the decay rate of density fluctuations; the keys above apply after a step only")
+            .to(&Scene::correction_relaxation)},
        {.schemes = {"isph", "isph-gpps"}}},
   });
   return r;

@@ -18,7 +18,8 @@ double dot(const Vec& a, const Vec& b) {
   return s;
 }
 
-// s_a - mean s for the current fields; returns the r.m.s.
+}  // namespace
+
 double density_fluctuation(const FluidFields& f, Vec& s) {
   const std::size_t n = f.n_real;
   const double w0 = f.kernel->W(0.0);
@@ -34,6 +35,7 @@ double density_fluctuation(const FluidFields& f, Vec& s) {
   return std::sqrt(dot(s, s) / static_cast<double>(n));
 }
 
+namespace {
 // BiCGSTAB (van der Vorst 1992) on K x = b from x = 0, matrix-free, at most max_it iterations.
 // Right-preconditioned by the diagonal: solves K D^-1 z = b, x = D^-1 z. Returns the iterate of the
 // smallest residual, not the last: BiCGSTAB's residual is not monotone, and where K D^-1 is
@@ -175,11 +177,28 @@ Vec safe_inverse(Vec d) {
 }
 }  // namespace
 
-NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, double* y, int max_iterations,
-                                              double threshold, double spacing) {
+int newton_shift(const FluidFields& f, const std::vector<double>& s, std::vector<double>& p, std::vector<double>& dx,
+                 std::vector<double>& dy) {
   // Krylov iterations per Newton step: enough for the smooth part of the error, too few to chase
   // the near-null odd-even modes (measured on cases/perturbed_lattice and the cavity).
   constexpr int kKrylovIterations = 20;
+  const std::size_t n = f.n_real;
+  auto K = [&](const Vec& q, Vec& out) {  // out = K q - mean: the change of s - mean s
+    correction_shift(f, q, dx, dy);
+    density_change(f, dx, dy, out);
+    const double mean = std::accumulate(out.begin(), out.end(), 0.0) / static_cast<double>(n);
+    for (double& v : out) v -= mean;
+  };
+  Vec minus_s(n);
+  for (std::size_t a = 0; a < n; ++a) minus_s[a] = -s[a];
+  const Vec inv_diag = safe_inverse(diagonal(f));
+  const int iterations = bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3);
+  correction_shift(f, p, dx, dy);
+  return iterations;
+}
+
+NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, double* y, int max_iterations,
+                                              double threshold, double spacing) {
   // Largest shift of a particle per step as a fraction of the spacing: the linearisation of eq. 59
   // holds for shifts small against the kernel radius.
   constexpr double kMaxShift = 0.1;
@@ -188,21 +207,11 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
   const StateLayout& L = rhs.layout();
   const std::size_t n = L.n;
   NewtonCorrectionResult res;
-  Vec s, p, minus_s(n), sx, sy, ds;
+  Vec s, p, sx, sy;
   rhs.eval(t, y, nullptr);
   res.error = density_fluctuation(rhs.fields(), s);
   for (int it = 0; it < max_iterations && res.error > threshold; ++it) {
-    const FluidFields& f = rhs.fields();
-    auto K = [&](const Vec& q, Vec& out) {  // out = K q - mean: the change of s - mean s
-      correction_shift(f, q, sx, sy);
-      density_change(f, sx, sy, out);
-      const double mean = std::accumulate(out.begin(), out.end(), 0.0) / static_cast<double>(n);
-      for (double& v : out) v -= mean;
-    };
-    for (std::size_t a = 0; a < n; ++a) minus_s[a] = -s[a];
-    const Vec inv_diag = safe_inverse(diagonal(f));
-    res.krylov_iterations += bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3);
-    correction_shift(f, p, sx, sy);
+    res.krylov_iterations += newton_shift(rhs.fields(), s, p, sx, sy);
     bool finite = true;
     for (std::size_t a = 0; a < n; ++a) finite = finite && std::isfinite(sx[a]) && std::isfinite(sy[a]);
     if (!finite) break;  // the solve failed: leave the positions as they are

@@ -30,6 +30,15 @@ void correction_shift(const FluidFields& f, const std::vector<double>& p, std::v
 void density_change(const FluidFields& f, const std::vector<double>& dx, const std::vector<double>& dy,
                     std::vector<double>& ds);
 
+// s_a - mean s, s_a = 1 - (m_a/rho0_a) sum_b W_ab (own term included), for the current fields;
+// returns its r.m.s. (Szewc eq. 56).
+double density_fluctuation(const FluidFields& f, std::vector<double>& s);
+// One Newton direction: K p = -s by a truncated, Jacobi-preconditioned BiCGSTAB (20 iterations at
+// most, from p = 0), and (dx, dy) = correction_shift(p), which removes s to first order. Returns the
+// Krylov iterations.
+int newton_shift(const FluidFields& f, const std::vector<double>& s, std::vector<double>& p, std::vector<double>& dx,
+                 std::vector<double>& dy);
+
 struct NewtonCorrectionResult {
   int iterations = 0;        // Newton steps taken
   int rejected = 0;          // steps given up because no fraction of them lowered the error

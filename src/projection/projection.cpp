@@ -88,7 +88,9 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
-  if (scene.density_correction != "none") correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+  // The constrained projection carries the correction inside f (ConstrainedPressure).
+  if (scene.density_correction != "none" && scene.projection != "constrained")
+    correction_ = std::make_unique<DensityCorrection>(scene, rhs);
   // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
   slip_origin_ = split_.active() && scene.projection_points == "step" && scene.projection != "constrained";
   if (scene.projection == "constrained") {

@@ -67,8 +67,13 @@ void print_run_header(const Scene& scene, const Model& model) {
   if (!chosen.empty()) std::printf("  auto:%s\n", chosen.c_str());
   if (model.sound_speed > 0) std::printf("  sound speed %.6g\n", model.sound_speed);
   if (model.reference_speed > 0) std::printf("  flow speed U %.6g (scale of the regularisation velocity)\n", model.reference_speed);
-  if (model.projection && model.projection->constrained())
-    std::printf("  constrained projection, divergence relaxation rate %.6g\n", model.projection->constraint()->relaxation());
+  if (model.projection && model.projection->constrained()) {
+    const ConstrainedPressure& c = *model.projection->constraint();
+    std::printf("  constrained projection, divergence relaxation rate %.6g", c.relaxation());
+    if (c.density_relaxation())  // the P-W correction as a velocity in dr/dt
+      std::printf(", density relaxation rate %.6g", c.density_relaxation()->rate());
+    std::printf("\n");
+  }
   const std::string method = scene.imex ? "ARKStep IMEX " + scene.imex_pair + " (viscosity implicit)" : scene.integrator;
   std::printf("  integrator %s, %s, end time %g\n", method.c_str(),
               scene.dt > 0 ? ("fixed dt " + std::to_string(scene.dt)).c_str() : "adaptive dt (stability limited)",

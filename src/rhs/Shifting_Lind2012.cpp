@@ -49,8 +49,8 @@ class Shifting final : public ParticleTerm<Shifting> {
   // delta-SPH without a hydrostatic part sums over the V_b (rho_b - rho_a) that the carried density
   // visits already (rhs/density_diffusion_sum.hpp): the evaluator lets this term add it. The pressure
   // gradient, continuity and viscosity of the WCSPH default read the same neighbours, volumes,
-  // velocities: taken over, their pair bodies run in the carried fields' loop (all three, two
-  // dimensions, plain pairs), or else their own loops run from here. Either way each adds its sums
+  // velocities: taken over, their pair bodies run in the carried fields' loop (all three and delta-SPH,
+  // two dimensions, plain pairs), or else their own loops run from here. Either way each adds its sums
   // where the evaluator would have, in the order of terms_from_scene (pressure, continuity, delta-SPH,
   // shifting, viscosity), with the same operations: the same bits as the terms run one by one.
   bool take_over(const Term& other) override {
@@ -85,7 +85,7 @@ class Shifting final : public ParticleTerm<Shifting> {
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     if constexpr (C::plain) {
-      if (pressure_ && continuity_ && viscosity_) {
+      if (pressure_ && continuity_ && viscosity_ && diffuse_) {
         if (anti_clump_ != 0.0)
           sums<C, true, true>(f, a, nb);
         else
@@ -105,7 +105,7 @@ class Shifting final : public ParticleTerm<Shifting> {
  private:
   // Two passes over the neighbours: grad C, then the carried fields weighted by grad C . grad_a W_ab
   // = F (grad C . r_ab), so that they need three sums, not the six of grad u and grad rho. kFused: the
-  // taken-over pressure gradient, continuity and viscosity in the second pass.
+  // taken-over pressure gradient, continuity, delta-SPH and viscosity in the second pass.
   template <class C, bool kClump, bool kFused, class Neighbors>
   void sums(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const bool two = two_d<C>(f);
@@ -127,15 +127,18 @@ class Shifting final : public ParticleTerm<Shifting> {
     // the pair loop does not wait for the saturation's square root).
     SplitSum du, dv, drho;  // (grad C . grad) u, grad C . grad rho
     SplitSum diffusion;     // delta-SPH's sum, when taken over
+    // Fused: two dimensions, the density carried and diffused, known at compile time.
+    const bool carry_density = kFused || density_, diffuse = kFused || diffuse_;
     auto carried = [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
       const auto fv = F * at(f.vol, b);
       const auto along = fv * (gcx * rx + gcy * ry);  // V_b grad C_a . grad_a W_ab
-      du[lane] += along * (at(f.u, b) - ua);
-      if (two) dv[lane] += along * (at(f.v, b) - va);
-      if (density_) {
+      // x (u_b - u_a) = -(x (u_a - u_b)) exactly: u_a - u_b as the viscosity's (one subtraction when fused)
+      du[lane] -= along * (ua - at(f.u, b));
+      if (kFused || two) dv[lane] -= along * (va - at(f.v, b));
+      if (carry_density) {
         const auto rho_ba = at(f.rho, b) - rho_a;
         drho[lane] += along * rho_ba;
-        if (diffuse_) diffusion[lane] -= fv * rho_ba;  // as rhs/DensityDiffusion_Antuono2010.cpp
+        if (diffuse) diffusion[lane] -= fv * rho_ba;  // as rhs/DensityDiffusion_Antuono2010.cpp
       }
     };
     auto add_own = [&] {

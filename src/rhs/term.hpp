@@ -34,8 +34,9 @@ class Term {
   virtual bool reads_kernel_value() const { return true; }
   // Whether this term adds `other`'s contribution in its own pair loop from now on, so that one walk
   // over the neighbours serves both: the evaluator asks this of force terms of the same partition
-  // (with the IMEX split, Term::can_be_implicit terms are of their own) and then runs `other` no more (in the sweep and over the pairs alike). A term that says yes
-  // keeps what it needs of `other`. Terms built outside the evaluator are not asked and stay whole.
+  // (with the IMEX split, the Term::can_be_implicit terms form their own) and then runs `other` no
+  // more (in the sweep and over the pairs alike). A term that says yes keeps what it needs of
+  // `other`. Terms built outside the evaluator are not asked and stay whole.
   virtual bool take_over(const Term& /*other*/) { return false; }
   // Forgets every term taken over: they run on their own again (the evaluator asks anew whenever its
   // partitions change, RhsOptions::imex_split).

@@ -1,39 +1,9 @@
-// Pressure gradient of Colagrossi & Landrini, Szewc et al. 2012 eq. 23:
-//   (1/rho grad p)_a = sum_b m_b (p_a + p_b) / (rho_a rho_b) grad_a W_ab.
-// Antisymmetric in a, b: conserves linear momentum exactly. With pressure reduction (Basa et al.
-// 2008 eq. 20) p_a and p_b become p - p_avg,a; with a kernel correction (Basa §4) grad_a W_ab
-// becomes the corrected gradient. Either breaks the exact conservation.
-#include "rhs/KernelCorrection_Basa2008.hpp"
-#include "rhs/particle_term.hpp"
+#include "rhs/PressureGradient_Colagrossi2003.hpp"
+
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph {
-
-class PressureGradientColagrossi final : public ParticleTerm<PressureGradientColagrossi> {
- public:
-  std::string name() const override { return "pressure_gradient:colagrossi"; }
-  bool reads_kernel_value() const override { return false; }
-  template <class C, class Neighbors>
-  void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
-    SplitSum ax, ay;
-    const double p_ref = C::plain || f.p_avg.empty() ? 0.0 : f.p_avg[a];
-    const double pa = f.p[a] - p_ref, inv_rhoa = 1.0 / f.rho[a];
-    // m_b / (rho_a rho_b) = V_b / rho_a; 1 / rho_a is applied to the sums (one product per
-    // particle, not per pair: the pair loop is bound by its multiplications).
-    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto w, auto F) {
-      auto gx = F * rx, gy = F * ry;  // grad_a W_ab; one pair (double) or two (Two): split_sum.hpp
-      if constexpr (!C::plain) corrected_gradient(f, a, rx, ry, w, F, gx, gy);
-      // without pressure reduction p_ref = 0, and x - 0 = x
-      const auto p_sum = C::plain ? pa + at(f.p, b) : pa + at(f.p, b) - p_ref;
-      const auto coeff = at(f.vol, b) * p_sum;
-      ax[lane] -= coeff * gx;
-      ay[lane] -= coeff * gy;
-    });
-    f.dudt[a] += ax.total() * inv_rhoa;
-    if (two_d<C>(f)) f.dvdt[a] += ay.total() * inv_rhoa;
-  }
-};
 
 Part<TermFactory> pressure_gradient_colagrossi() {
   return {"colagrossi", "(p_a + p_b) form of Colagrossi & Landrini 2003 (Szewc et al. 2012 eq. 23)",

@@ -21,6 +21,9 @@
 
 #include "core/param_builder.hpp"
 #include "kernels/kernel.hpp"
+#include "rhs/Continuity_Szewc2012.hpp"
+#include "rhs/PressureGradient_Colagrossi2003.hpp"
+#include "rhs/Viscosity_Morris1997.hpp"
 #include "rhs/density_diffusion_sum.hpp"
 #include "rhs/particle_term.hpp"
 #include "rhs/reference_speed.hpp"
@@ -44,8 +47,25 @@ class Shifting final : public ParticleTerm<Shifting> {
   bool moves_particles() const override { return true; }
   bool reads_kernel_value() const override { return anti_clump_ != 0.0; }
   // delta-SPH without a hydrostatic part sums over the V_b (rho_b - rho_a) that the carried density
-  // visits already (rhs/density_diffusion_sum.hpp): the evaluator lets this term add it.
+  // visits already (rhs/density_diffusion_sum.hpp): the evaluator lets this term add it. The pressure
+  // gradient, continuity and viscosity of the WCSPH default read the same neighbours, volumes,
+  // velocities: taken over, their pair bodies run in the carried fields' loop (all three and delta-SPH,
+  // two dimensions, plain pairs), or else their own loops run from here. Either way each adds its sums
+  // where the evaluator would have, in the order of terms_from_scene (pressure, continuity, delta-SPH,
+  // shifting, viscosity), with the same operations: the same bits as the terms run one by one.
   bool take_over(const Term& other) override {
+    if (const auto* p = dynamic_cast<const PressureGradientColagrossi*>(&other); p && !pressure_) {
+      pressure_ = p;
+      return true;
+    }
+    if (const auto* c = dynamic_cast<const ContinuitySzewc*>(&other); c && !continuity_) {
+      continuity_ = c;
+      return true;
+    }
+    if (const auto* v = dynamic_cast<const ViscosityMorris*>(&other); v && !viscosity_) {
+      viscosity_ = v;
+      return true;
+    }
     const auto* diffusion = dynamic_cast<const DensityDiffusionSum*>(&other);
     if (!diffusion || !density_ || diffuse_) return false;
     const std::optional<double> coeff = diffusion->plain_coefficient();
@@ -54,20 +74,39 @@ class Shifting final : public ParticleTerm<Shifting> {
     diffusion_coeff_ = *coeff;
     return true;
   }
+  void give_back() override {
+    pressure_ = nullptr;
+    continuity_ = nullptr;
+    viscosity_ = nullptr;
+    diffuse_ = false;
+  }
   // The pair configuration C (rhs/particle_term.hpp) and whether Lind's weight is on, both fixed
   // outside the pair loop: without it, W_ab is neither gathered nor read.
   template <class C, class Neighbors>
   void particle(FluidFields& f, std::size_t a, const Neighbors& nb) const {
+    if constexpr (C::plain) {
+      if (pressure_ && continuity_ && viscosity_ && diffuse_) {
+        if (anti_clump_ != 0.0)
+          sums<C, true, true>(f, a, nb);
+        else
+          sums<C, false, true>(f, a, nb);
+        return;
+      }
+    }
+    if (pressure_) pressure_->template particle<C>(f, a, nb);
+    if (continuity_) continuity_->template particle<C>(f, a, nb);
     if (anti_clump_ != 0.0)
-      sums<C, true>(f, a, nb);
+      sums<C, true, false>(f, a, nb);
     else
-      sums<C, false>(f, a, nb);
+      sums<C, false, false>(f, a, nb);
+    if (viscosity_) viscosity_->template particle<C>(f, a, nb);
   }
 
  private:
   // Two passes over the neighbours: grad C, then the carried fields weighted by grad C . grad_a W_ab
-  // = F (grad C . r_ab), so that they need three sums, not the six of grad u and grad rho.
-  template <class C, bool kClump, class Neighbors>
+  // = F (grad C . r_ab), so that they need three sums, not the six of grad u and grad rho. kFused: the
+  // taken-over pressure gradient, continuity, delta-SPH and viscosity in the second pass.
+  template <class C, bool kClump, bool kFused, class Neighbors>
   void sums(FluidFields& f, std::size_t a, const Neighbors& nb) const {
     const bool two = two_d<C>(f);
     SplitSum cx, cy;  // grad C
@@ -88,29 +127,55 @@ class Shifting final : public ParticleTerm<Shifting> {
     // the pair loop does not wait for the saturation's square root).
     SplitSum du, dv, drho;  // (grad C . grad) u, grad C . grad rho
     SplitSum diffusion;     // delta-SPH's sum, when taken over
-    nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
+    // Fused: two dimensions, the density carried and diffused, known at compile time.
+    const bool carry_density = kFused || density_, diffuse = kFused || diffuse_;
+    auto carried = [&](auto lane, auto b, auto rx, auto ry, auto, auto, auto F) {
       const auto fv = F * at(f.vol, b);
       const auto along = fv * (gcx * rx + gcy * ry);  // V_b grad C_a . grad_a W_ab
-      du[lane] += along * (at(f.u, b) - ua);
-      if (two) dv[lane] += along * (at(f.v, b) - va);
-      if (density_) {
+      // x (u_b - u_a) = -(x (u_a - u_b)) exactly: u_a - u_b as the viscosity's (one subtraction when fused)
+      du[lane] -= along * (ua - at(f.u, b));
+      if (kFused || two) dv[lane] -= along * (va - at(f.v, b));
+      if (carry_density) {
         const auto rho_ba = at(f.rho, b) - rho_a;
         drho[lane] += along * rho_ba;
-        if (diffuse_) diffusion[lane] -= fv * rho_ba;  // as rhs/DensityDiffusion_Antuono2010.cpp
+        if (diffuse) diffusion[lane] -= fv * rho_ba;  // as rhs/DensityDiffusion_Antuono2010.cpp
       }
-    });
-    if (diffuse_) f.drhodt[a] += diffusion_coeff_ * diffusion.total();
-    double k = -scale_;  // du_a = k grad C_a
-    if (inv_limit2_ > 0) k /= std::sqrt(1.0 + k * k * (gcx * gcx + gcy * gcy) * inv_limit2_);
-    f.shift_u[a] = k * gcx;
-    f.dudt[a] += k * du.total();
-    if (two) {
-      f.shift_v[a] = k * gcy;
-      f.dvdt[a] += k * dv.total();
+    };
+    auto add_own = [&] {
+      if (diffuse_) f.drhodt[a] += diffusion_coeff_ * diffusion.total();
+      double k = -scale_;  // du_a = k grad C_a
+      if (inv_limit2_ > 0) k /= std::sqrt(1.0 + k * k * (gcx * gcx + gcy * gcy) * inv_limit2_);
+      f.shift_u[a] = k * gcx;
+      f.dudt[a] += k * du.total();
+      if (two) {
+        f.shift_v[a] = k * gcy;
+        f.dvdt[a] += k * dv.total();
+      }
+      if (density_) f.drhodt[a] += k * drho.total();
+    };
+    if constexpr (kFused) {  // one walk: the loads of b, r_ab, F_ab, V_b, u_b, v_b shared
+      PressureGradientColagrossi::Sums<C> pressure(f, a);
+      ContinuitySzewc::Sums<C> continuity(f, a);
+      ViscosityMorris::Sums<C> viscosity(f, a);
+      nb.for_pairs_split(C{}, [&](auto lane, auto b, auto rx, auto ry, auto r2, auto w, auto F) {
+        pressure(lane, b, rx, ry, r2, w, F);
+        continuity(lane, b, rx, ry, r2, w, F);
+        carried(lane, b, rx, ry, r2, w, F);
+        viscosity(lane, b, rx, ry, r2, w, F);
+      });
+      pressure.add_to(f);
+      continuity.add_to(f);
+      add_own();
+      viscosity.add_to(f);
+    } else {
+      nb.for_pairs_split(C{}, carried);
+      add_own();
     }
-    if (density_) f.drhodt[a] += k * drho.total();
   }
 
+  const PressureGradientColagrossi* pressure_ = nullptr;  // taken over (take_over)
+  const ContinuitySzewc* continuity_ = nullptr;
+  const ViscosityMorris* viscosity_ = nullptr;
   double scale_;      // A h U V0
   double anti_clump_; // R
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit

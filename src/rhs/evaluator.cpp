@@ -48,16 +48,6 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
     implicit_.push_back(t->can_be_implicit());
     moves_particles_ = moves_particles_ || t->moves_particles();
   }
-  // Force terms of one partition that one pair loop can serve (Term::take_over): the one taken over
-  // runs no more.
-  taken_.assign(terms_.size(), 0);
-  for (std::size_t i = 0; i < terms_.size(); ++i)
-    for (std::size_t j = 0; j < terms_.size(); ++j) {
-      const bool pairable = i != j && !taken_[i] && !taken_[j] && terms_[i]->stage() == Term::Stage::force &&
-                            terms_[j]->stage() == Term::Stage::force && terms_[i]->per_particle() &&
-                            terms_[j]->per_particle() && implicit_[i] == implicit_[j];
-      if (pairable && terms_[i]->take_over(*terms_[j])) taken_[j] = 1;
-    }
   // The projection walks the pairs of its field refresh (at r*) several times (divergence,
   // assembly, gradient): stored, not lean. Its force terms' f(t, y) is at other positions, so they
   // run in the sweep like WCSPH's.
@@ -77,6 +67,17 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
 
 void RhsEvaluator::set_options(const RhsOptions& options) {
   options_ = options;
+  // Force terms of one partition that one pair loop can serve (Term::take_over): the one taken over
+  // runs no more. Without the IMEX split every term is of the one partition.
+  taken_.assign(terms_.size(), 0);
+  for (auto& t : terms_) t->give_back();
+  for (std::size_t i = 0; i < terms_.size(); ++i)
+    for (std::size_t j = 0; j < terms_.size(); ++j) {
+      const bool pairable = i != j && !taken_[i] && !taken_[j] && terms_[i]->stage() == Term::Stage::force &&
+                            terms_[j]->stage() == Term::Stage::force && terms_[i]->per_particle() &&
+                            terms_[j]->per_particle() && (!options_.imex_split || implicit_[i] == implicit_[j]);
+      if (pairable && terms_[i]->take_over(*terms_[j])) taken_[j] = 1;
+    }
   fields_.allow_plain_pairs = options.plain_pair_loops;
   // The pair list is built at every f when some term walks it: a term outside the sweep, or with
   // the IMEX split an implicit term (it runs over the pairs, and the Jacobian's probes walk them

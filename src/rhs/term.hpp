@@ -34,9 +34,13 @@ class Term {
   virtual bool reads_kernel_value() const { return true; }
   // Whether this term adds `other`'s contribution in its own pair loop from now on, so that one walk
   // over the neighbours serves both: the evaluator asks this of force terms of the same partition
-  // and then runs `other` no more (in the sweep and over the pairs alike). A term that says yes
-  // keeps what it needs of `other`. Terms built outside the evaluator are not asked and stay whole.
+  // (with the IMEX split, the Term::can_be_implicit terms form their own) and then runs `other` no
+  // more (in the sweep and over the pairs alike). A term that says yes keeps what it needs of
+  // `other`. Terms built outside the evaluator are not asked and stay whole.
   virtual bool take_over(const Term& /*other*/) { return false; }
+  // Forgets every term taken over: they run on their own again (the evaluator asks anew whenever its
+  // partitions change, RhsOptions::imex_split).
+  virtual void give_back() {}
   // The traits of the registered part that built the term (core/registry.hpp), set by
   // terms_from_scene; a term built without a part has the default traits.
   const PartTraits& traits() const { return traits_; }

@@ -4,17 +4,20 @@
 //   - the extra stress of the transport velocity and the delta-SPH flux are pair-antisymmetric:
 //     total momentum and total mass are conserved to round-off on a periodic box;
 //   - delta-SPH leaves a hydrostatic density alone, on a disordered lattice too;
-//   - with both on, delta-SPH summed inside the shifting's pair loop gives the bits of the terms
-//     applied one by one;
+//   - with both on, delta-SPH, the pressure gradient, continuity and viscosity summed inside the
+//     shifting's pair loop give the bits of the terms applied one by one; with the IMEX split the
+//     viscosity stays outside it;
 //   - the scheme and density-mode checks.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "integrate/viscous_split.hpp"
 #include "io/scene_reader.hpp"
 #include "rhs/terms.hpp"
 #include "run/setup.hpp"
@@ -199,11 +202,12 @@ TEST_CASE("delta-SPH: a hydrostatic density has no diffusive flux") {
   CHECK(with_gravity <= 1e-9 * without);
 }
 
-// The evaluator lets shifting add delta-SPH in its own pair loop (Term::take_over) and skips the
-// delta-SPH term; the same operations in the same order, so the derivatives must equal bit for bit
-// those of the force terms applied one after another (a delta-SPH counted twice or not at all
-// changes drho/dt by O(1) of its flux).
-TEST_CASE("delta-SPH inside the shifting's pair loop: the bits of the terms one by one") {
+// The evaluator lets shifting add delta-SPH, the pressure gradient, continuity and viscosity in its
+// own pair loop (Term::take_over) and skips those terms; the same operations in the same order, so
+// the derivatives must equal bit for bit those of the force terms applied one after another (a term
+// counted twice or not at all changes the derivatives by O(1) of its own contribution, measured here
+// to be non-zero).
+TEST_CASE("terms inside the shifting's pair loop: the bits of the terms one by one") {
   const Scene scene = box({"method.regularisation=\"shifting\"", "method.density_diffusion=\"delta_sph\"",
                            "initial.offset=[\"0.005*sin(37*x + 11*y)\", \"0.005*cos(23*x - 7*y)\"]"});
   Evaluated e(scene);
@@ -211,19 +215,25 @@ TEST_CASE("delta-SPH inside the shifting's pair loop: the bits of the terms one 
   for (std::size_t a = 0; a < L.n; ++a)  // a density field with structure
     e.y[L.rho() + a] = 1.0 + 0.01 * std::sin(2 * M_PI * e.y[L.pos(0) + a]) * std::cos(2 * M_PI * e.y[L.pos(1) + a]);
   const FluidFields& swept = e.eval();
+  const std::vector<std::string> taken = {"density_diffusion:delta_sph", "pressure_gradient:colagrossi",
+                                          "continuity:szewc19", "viscosity:morris"};
   const std::vector<std::string> names = e.model.rhs->term_names();
-  CHECK(std::find(names.begin(), names.end(), "density_diffusion:delta_sph") != names.end());
+  for (const std::string& name : taken) CHECK(std::find(names.begin(), names.end(), name) != names.end());
   FluidFields f = swept;
   for (auto* v : {&f.dudt, &f.dvdt, &f.drhodt, &f.shift_u, &f.shift_v}) std::fill(v->begin(), v->end(), 0.0);
-  double diffusion = 0;  // the size of delta-SPH's own flux
+  std::map<std::string, double> size;  // the largest change of a derivative by each taken-over term
   for (const auto& term : terms_from_scene(scene, e.model.sound_speed)) {
     if (term->stage() != Term::Stage::force) continue;
-    const std::vector<double> before = f.drhodt;
+    const std::vector<double> du = f.dudt, drho = f.drhodt;
     term->apply(f);
-    if (term->name() == "density_diffusion:delta_sph")
-      for (std::size_t a = 0; a < f.n_real; ++a) diffusion = std::max(diffusion, std::abs(f.drhodt[a] - before[a]));
+    double& s = size[term->name()];
+    for (std::size_t a = 0; a < f.n_real; ++a)
+      s = std::max({s, std::abs(f.dudt[a] - du[a]), std::abs(f.drhodt[a] - drho[a])});
   }
-  REQUIRE(diffusion > 0);
+  for (const std::string& name : taken) {
+    CAPTURE(name);
+    REQUIRE(size[name] > 0);
+  }
   const auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
     return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
   };
@@ -231,6 +241,32 @@ TEST_CASE("delta-SPH inside the shifting's pair loop: the bits of the terms one 
   CHECK(same(f.dudt, swept.dudt));
   CHECK(same(f.dvdt, swept.dvdt));
   CHECK(same(f.shift_u, swept.shift_u));
+}
+
+// With the IMEX split (time.imex) the viscosity is of the implicit partition: the shifting, which
+// takes it over otherwise, gives it back, so f_E + f_I is the whole f. Tolerance 1e-12 relative to the
+// largest derivative: the split adds the viscous sums to the rest in another order (a few roundings);
+// a viscosity counted twice or not at all is off by its own size, required non-zero here.
+TEST_CASE("IMEX split with shifting: f_E + f_I is the whole f, the viscosity counted once") {
+  const Scene scene = box({"method.regularisation=\"shifting\"", "method.density_diffusion=\"delta_sph\"",
+                           "initial.offset=[\"0.005*sin(37*x + 11*y)\", \"0.005*cos(23*x - 7*y)\"]"});
+  Model whole = build_model(scene), parts = build_model(scene);
+  const StateLayout& L = whole.rhs->layout();
+  std::vector<double> y(L.size()), f(L.size()), fe(L.size()), fi(L.size());
+  whole.rhs->initial_state(y.data());
+  whole.rhs->eval(0.0, y.data(), f.data());
+  ViscousSplit split(scene, *parts.rhs);
+  parts.rhs->eval(0.0, y.data(), fe.data());
+  parts.rhs->implicit_part(fi.data());
+  double scale = 0, viscous = 0, worst = 0;
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    scale = std::max(scale, std::abs(f[i]));
+    viscous = std::max(viscous, std::abs(fi[i]));
+    worst = std::max(worst, std::abs(fe[i] + fi[i] - f[i]));
+  }
+  MESSAGE("largest |f| ", scale, ", |f_I| ", viscous, ", |f_E + f_I - f| ", worst);
+  REQUIRE(viscous > 1e-6 * scale);
+  CHECK(worst <= 1e-12 * scale);
 }
 
 TEST_CASE("regularisation keys: delta-SPH needs wcsph and the continuity equation") {

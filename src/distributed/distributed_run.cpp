@@ -270,8 +270,9 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       }
     }
   } catch (const NumericalFailure& e) {  // ARKODE gave up: on every rank alike (global norms, agreed flags)
-    result.exit_code = 3;
-    result.message = e.what();
+    const Verdict v = agree(comm, {3, e.what(), integrator.failure_names_entry()});
+    result.exit_code = v.code;
+    result.message = v.message;
   } catch (const OutputError& e) {
     result.exit_code = 5;
     result.message = e.what();

@@ -67,6 +67,9 @@ class ArkodeIntegrator : public TimeIntegrator {
   // restarted from the checkpoint continues bit for bit.
   void restart_at(double t, double h) final;
   double next_step() const final;  // the step size ARKODE will attempt next
+  // Whether the last failure of an evolve call named a non-finite right-hand side entry of this
+  // process's state (several ranks: the rank holding the particle).
+  bool failure_names_entry() const { return non_finite_.found; }
   // A run over several ranks after a migration: the state becomes y (this rank's new particles, any
   // length), and the integrator is re-initialised at t as by restart_at(t, h).
   void resize(const std::vector<double>& y, double t, double h);

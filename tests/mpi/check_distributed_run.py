@@ -12,7 +12,9 @@ Taylor-Green vortex (25 x 25) on 2 and 3 ranks against the one-process run:
     rank with one message from rank 0;
   - a right-hand side that turns NaN on the particles of one rank (a body force NaN for x > 0.8
     after t = 0.02) ends every rank with exit code 3, as the one-process run, within the timeout
-    (no rank left waiting).
+    (no rank left waiting), and the message names the particle as the one-process run's does;
+  - so does a state check that fails on one rank only (a body force of 1e9 for x > 0.8: speeds
+    beyond the blow-up bound).
 
 usage: check_distributed_run.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC FLAGS ...]
 """
@@ -56,6 +58,11 @@ def run(name, ranks, args):
         return out, None, ""
     print(" ".join(cmd), "->", p.returncode)
     return out, p.returncode, p.stderr
+
+
+def message(err):
+    lines = [l for l in err.splitlines() if l.startswith("arksph:")]
+    return lines[-1] if lines else ""
 
 
 def velocities(out):
@@ -122,9 +129,16 @@ _, code1, _ = run("nan-1", 1, [vortex] + nan_force + short)
 check(code1 == 3, "NaN force on one process: exit 3")
 for ranks in (2, 3):
     out, code, err = run("nan-%d" % ranks, ranks, [vortex] + nan_force + short)
-    check(code == 3, "NaN force on the particles of one rank of %d: exit %s" % (ranks, code))
+    check(code == 3 and "acceleration ax = NaN" in err,
+          "NaN force on the particles of one rank of %d: exit %s, %s" % (ranks, code, message(err)))
     if code == 3:
         check(summary(out)["status"] == "failed", "NaN force on %d ranks: summary status failed" % ranks)
+
+blow_up = ["--set", 'fluid.body_force=["t > 0.02 ? (x > 0.8 ? 1e9 : 0) : 0", "0"]']
+for ranks in (1, 3):
+    out, code, err = run("blow-up-%d" % ranks, ranks, [vortex] + blow_up + short)
+    check(code == 3 and "exceeds the blow-up bound" in err,
+          "a blow-up on the particles of one rank of %d: exit %s, %s" % (ranks, code, message(err)))
 
 print("check_distributed_run: %d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)

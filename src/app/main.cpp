@@ -58,6 +58,8 @@ const char* kUsage =
     "  arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...]\n"
     "      Continues the run saved in checkpoint FILE (e.g. --set time.end=10 to go further); the scene is the\n"
     "      one stored in FILE with the --set overrides. Output continues in its directory (or --out DIR).\n"
+    "  mpirun -n P arksph run SCENE.toml [...]\n"
+    "      WCSPH decomposed over P MPI ranks (builds with MPI; docs/parallel.md, \"Runs over several ranks\")\n"
     "  arksph batch SWEEP.toml [--jobs N] [--out DIR]   parameter sweep in parallel child runs (batch --help)\n"
     "  arksph study order STUDY.toml [--out DIR]        observed temporal order of ARKODE tables (study --help)\n"
     "  arksph study work-precision STUDY.toml           error against wall time, schemes x resolutions\n"

@@ -82,7 +82,8 @@ parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector
   try {
     return parallel::Decomposition::rcb(grid, counts, ranks);
   } catch (const std::exception& e) {  // fewer cells of side R than ranks
-    throw InputError(scene.source + ": " + std::to_string(ranks) + " ranks: the box cannot be split into that many blocks of cells of the kernel support (" +
+    throw InputError(scene.source + ": " + std::to_string(ranks) +
+                     " ranks: the box cannot be split into that many blocks of cells of the kernel support (" +
                      e.what() + ")");
   }
 }
@@ -90,12 +91,15 @@ parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector
 }  // namespace
 
 void check_distributable(const Scene& scene, const RunOptions& options, int ranks) {
-  const std::string on = " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
+  const std::string on =
+      " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
   if (options.restart) throw InputError("--restart" + on);
-  if (!scheme_traits(scene.scheme).weakly_compressible) throw InputError(scene.source + ": scheme " + scene.scheme + on);
+  if (!scheme_traits(scene.scheme).weakly_compressible)
+    throw InputError(scene.source + ": scheme " + scene.scheme + on);
   if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
   if (scene.checkpoint_every > 0) throw InputError(scene.source + ": output.checkpoint_every" + on);
-  if (scene.dimension != 2) throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
+  if (scene.dimension != 2)
+    throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
 }
 
 RunResult run_distributed(const Scene& scene, const RunOptions& options, const parallel::Communicator& comm) {
@@ -160,7 +164,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   eo.any_rank = [&comm](bool local) { return comm.max(static_cast<std::int64_t>(local)) > 0; };
   eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(mine.layout(), mine.ids(), i, v); };
   const auto stable = [&](const double* yl) {
-    return stable_step(scene, model, comm.max(local_max_speed(mine.layout(), yl)), comm.max(f.local_max_acceleration()));
+    return stable_step(scene, model, comm.max(local_max_speed(mine.layout(), yl)),
+                       comm.max(f.local_max_acceleration()));
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };
   eo.initial_dt = stable(y.data());
@@ -225,8 +230,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
         } catch (const NumericalFailure& e) {
           v = {3, e.what()};
         }
-        const long r = static_cast<long>(comm.sum(static_cast<std::int64_t>(
-            WallReflection(scene, mine.layout()).apply(integrator.state()))));
+        const long r = static_cast<long>(
+            comm.sum(static_cast<std::int64_t>(WallReflection(scene, mine.layout()).apply(integrator.state()))));
         if (r) {  // sync point: every rank re-initialises
           reflections += r;
           integrator.reset(t);
@@ -289,7 +294,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     try {
       out->finish(result, st, wall, rhs.evaluations() - diag_before + 1, reflections, f.exchanges());
     } catch (const OutputError& e) {
-      last = {result.exit_code ? result.exit_code : 5, result.message.empty() ? e.what() : result.message + "; " + e.what()};
+      last = {result.exit_code ? result.exit_code : 5,
+              result.message.empty() ? e.what() : result.message + "; " + e.what()};
     }
   }
   last = agree(comm, last);

@@ -144,8 +144,7 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   // This rank's derivatives, in its own layout.
   const StateLayout mine = owned_.layout();
   const auto take = [&](std::size_t from, std::size_t to) {
-    std::copy(ydot_all_.begin() + static_cast<long>(from), ydot_all_.begin() + static_cast<long>(from + n),
-              ydot + to);
+    std::copy(ydot_all_.begin() + static_cast<long>(from), ydot_all_.begin() + static_cast<long>(from + n), ydot + to);
   };
   double a2 = 0;
   for (std::size_t a = 0; a < n; ++a) {

@@ -60,7 +60,7 @@ class HaloRhs {
   double radius_, skin_, cutoff_;
   parallel::HaloExchange exchange_;
   parallel::ParticleFields halo_;
-  std::vector<int> update_fields_;        // sent at every eval
+  std::vector<int> update_fields_;           // sent at every eval
   std::vector<std::vector<double>> offset_;  // per axis: state position - seen position
   std::vector<std::vector<double>> ref_;     // per axis: seen positions at the exchange
   std::unique_ptr<RhsEvaluator> evaluator_;

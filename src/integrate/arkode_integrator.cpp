@@ -14,7 +14,14 @@ namespace arksph {
 
 ArkodeIntegrator::ArkodeIntegrator(const ArkodeStepModule& module, const std::vector<double>& y0, double t0,
                                    const StepOptions& opt)
-    : module_(module), factory_(opt.state_vector), any_rank_(opt.any_rank), stab_(opt.stability), n_(y0.size()), t_(t0), fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt),
+    : module_(module),
+      factory_(opt.state_vector),
+      any_rank_(opt.any_rank),
+      stab_(opt.stability),
+      n_(y0.size()),
+      t_(t0),
+      fixed_dt_(opt.fixed_dt),
+      current_h_(opt.fixed_dt),
       describe_entry_(opt.describe_entry) {
   if (SUNContext_Create(nullptr, &ctx_) < 0) throw NumericalFailure("ARKODE: SUNContext_Create failed");
   y_ = new_state_vector(n_);

@@ -17,8 +17,32 @@
 #include "io/checkpoint.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_reader.hpp"
+#ifdef ARKSPH_WITH_MPI
+#include <memory>
+
+#include "distributed/distributed_run.hpp"
+#include "parallel/communicator.hpp"
+#include "study/batch_ranks.hpp"
+#endif
 
 namespace {
+
+#ifdef ARKSPH_WITH_MPI
+// `arksph run` under an MPI launcher of several processes: MPI is initialised and the run is
+// decomposed over the ranks (distributed/distributed_run.hpp). Without a launcher, or with one
+// process, MPI is never initialised and the run is the one-process run.
+std::unique_ptr<arksph::parallel::MpiSession> g_mpi;
+std::unique_ptr<arksph::parallel::Communicator> g_comm;
+#endif
+// Ranks other than 0 of a decomposed run: the ranks agree on every outcome, rank 0 reports it.
+bool g_quiet_rank = false;
+
+arksph::RunResult run_scene(const arksph::Scene& scene, const arksph::RunOptions& options) {
+#ifdef ARKSPH_WITH_MPI
+  if (g_comm) return arksph::distributed::run_distributed(scene, options, *g_comm);
+#endif
+  return arksph::run_simulation(scene, options);
+}
 
 const char* kUsage =
     "arksph - SPH for incompressible viscous flow (WCSPH and ISPH on SUNDIALS ARKODE)\n"
@@ -34,6 +58,8 @@ const char* kUsage =
     "  arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...]\n"
     "      Continues the run saved in checkpoint FILE (e.g. --set time.end=10 to go further); the scene is the\n"
     "      one stored in FILE with the --set overrides. Output continues in its directory (or --out DIR).\n"
+    "  mpirun -n P arksph run SCENE.toml [...]\n"
+    "      WCSPH decomposed over P MPI ranks (builds with MPI; docs/parallel.md, \"Runs over several ranks\")\n"
     "  arksph batch SWEEP.toml [--jobs N] [--out DIR]   parameter sweep in parallel child runs (batch --help)\n"
     "  arksph study order STUDY.toml [--out DIR]        observed temporal order of ARKODE tables (study --help)\n"
     "  arksph study work-precision STUDY.toml           error against wall time, schemes x resolutions\n"
@@ -111,7 +137,8 @@ int cmd_run(int argc, char** argv) {
       !restart_path.empty() ? arksph::read_scene_text(checkpoint.scene_toml, restart_path + " [scene_toml]", sets)
       : scene_path.empty()  ? arksph::read_scene_text(arksph::default_scene_toml(), "<embedded default>", sets)
                             : arksph::read_scene_file(scene_path, sets);
-  const arksph::RunResult r = arksph::run_simulation(scene, options);
+  const arksph::RunResult r = run_scene(scene, options);
+  if (g_quiet_rank) return r.exit_code;
   if (r.interrupted) {
     std::fprintf(stderr, "arksph: %s; checkpoint written to %s (continue: arksph run --restart %s)\n",
                  r.message.c_str(), r.checkpoint.c_str(), r.checkpoint.c_str());
@@ -145,6 +172,14 @@ int main(int argc, char** argv) {
       std::fputs(arksph::version_text().c_str(), stdout);
       return 0;
     }
+#ifdef ARKSPH_WITH_MPI
+    if (cmd == "run" && arksph::launcher_ranks_from_environment().size > 1) {
+      g_mpi = std::make_unique<arksph::parallel::MpiSession>(&argc, &argv);
+      g_comm = std::make_unique<arksph::parallel::Communicator>();
+      g_quiet_rank = g_comm->rank() != 0;
+      if (g_quiet_rank && !std::freopen("/dev/null", "w", stdout)) return 1;  // header, progress, final lines: rank 0
+    }
+#endif
     if (cmd == "run") return cmd_run(argc - 2, argv + 2);
     if (cmd == "list") return cmd_list();
     if (cmd == "batch") return arksph::cmd_batch(argc - 2, argv + 2);
@@ -159,14 +194,14 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr, "arksph: %s: unknown command (try arksph --help)\n", arksph::echo_value(cmd).c_str());
     return 2;
-  } catch (const arksph::InputError& e) {
-    std::fprintf(stderr, "arksph: %s\n", e.what());
+  } catch (const arksph::InputError& e) {  // on several ranks: raised alike on every rank, reported by rank 0
+    if (!g_quiet_rank) std::fprintf(stderr, "arksph: %s\n", e.what());
     return 2;
   } catch (const arksph::NumericalFailure& e) {
-    std::fprintf(stderr, "arksph: simulation failed: %s\n", e.what());
+    if (!g_quiet_rank) std::fprintf(stderr, "arksph: simulation failed: %s\n", e.what());
     return 3;
   } catch (const arksph::OutputError& e) {
-    std::fprintf(stderr, "arksph: %s\n", e.what());
+    if (!g_quiet_rank) std::fprintf(stderr, "arksph: %s\n", e.what());
     return 5;
   } catch (const arksph::OutOfMemory& e) {
     std::fprintf(stderr, "arksph: out of memory: %s\n", e.what());

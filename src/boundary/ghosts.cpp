@@ -24,7 +24,7 @@ Map compose(const Map& a, const Map& b) {
 }
 }  // namespace
 
-GhostBuilder::GhostBuilder(const Scene& scene, double support_radius)
+GhostBuilder::GhostBuilder(const Scene& scene, double support_radius, bool periodic_images)
     : dim_(scene.dimension),
       radius_(support_radius),
       alpha_(scene.corner_alpha),
@@ -36,6 +36,7 @@ GhostBuilder::GhostBuilder(const Scene& scene, double support_radius)
       dx_(scene.spacing) {
   for (int k = 0; k < dim_; ++k) len_[k] = hi_[k] - lo_[k];
   any_side_ = true;
+  periodic_images_ = periodic_images;
   for (int s = 0; s < 2 * dim_; ++s)
     if (sides_[s].kind == SideKind::wall) any_wall_ = true;
 }
@@ -62,6 +63,7 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
         const double dist = end == 0 ? p[k] - lo_[k] : hi_[k] - p[k];
         if (dist >= reach) continue;
         const SideSpec& s = sides_[side];
+        if (s.kind == SideKind::periodic && !periodic_images_) continue;
         Option o;
         o.side = side;
         if (s.kind == SideKind::periodic) {

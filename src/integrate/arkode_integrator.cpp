@@ -14,16 +14,37 @@ namespace arksph {
 
 ArkodeIntegrator::ArkodeIntegrator(const ArkodeStepModule& module, const std::vector<double>& y0, double t0,
                                    const StepOptions& opt)
-    : module_(module), stab_(opt.stability), n_(y0.size()), t_(t0), fixed_dt_(opt.fixed_dt), current_h_(opt.fixed_dt),
+    : module_(module),
+      factory_(opt.state_vector),
+      any_rank_(opt.any_rank),
+      stab_(opt.stability),
+      n_(y0.size()),
+      t_(t0),
+      fixed_dt_(opt.fixed_dt),
+      current_h_(opt.fixed_dt),
       describe_entry_(opt.describe_entry) {
   if (SUNContext_Create(nullptr, &ctx_) < 0) throw NumericalFailure("ARKODE: SUNContext_Create failed");
-  y_ = new_serial_vector(static_cast<sunindextype>(n_), ctx_);
+  y_ = new_state_vector(n_);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y_));
+}
+
+N_Vector ArkodeIntegrator::new_state_vector(std::size_t n) {
+  const auto length = static_cast<sunindextype>(n);
+  N_Vector v = factory_.make ? factory_.make(length, ctx_) : new_serial_vector(length, ctx_);
+  if (!v) throw NumericalFailure("ARKODE: the state vector could not be created");
+  return v;
+}
+
+void ArkodeIntegrator::destroy_state_vector(N_Vector v) {
+  if (factory_.destroy)
+    factory_.destroy(v);
+  else
+    N_VDestroy(v);
 }
 
 ArkodeIntegrator::~ArkodeIntegrator() {
   free_memory();
-  if (y_) N_VDestroy(y_);
+  if (y_) destroy_state_vector(y_);
   if (ctx_) SUNContext_Free(&ctx_);
 }
 
@@ -77,12 +98,14 @@ int ArkodeIntegrator::evaluate_rhs(const RhsFunction& f, double t, N_Vector y, N
   return guarded([&] {
     f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
     const double* d = N_VGetArrayPointer(ydot);
-    for (std::size_t i = 0; i < n_; ++i)
+    bool bad = false;
+    for (std::size_t i = 0; i < n_ && !bad; ++i)
       if (!std::isfinite(d[i])) {
         if (!non_finite_.found) non_finite_ = {true, t, d[i], i};
-        return 1;  // recoverable: ARKODE retries with a smaller step
+        bad = true;
       }
-    return 0;
+    if (any_rank_) bad = any_rank_(bad);
+    return bad ? 1 : 0;  // 1, recoverable: ARKODE retries with a smaller step
   });
 }
 
@@ -161,6 +184,20 @@ void ArkodeIntegrator::restart_at(double t, double h) {
   } else if (h > 0) {
     check(module_.set_init_step(mem_, h), "SetInitStep");
   }
+}
+
+void ArkodeIntegrator::resize(const std::vector<double>& y, double t, double h) {
+  N_Vector fresh = new_state_vector(y.size());
+  std::copy(y.begin(), y.end(), N_VGetArrayPointer(fresh));
+  const int flag = module_.resize(mem_, fresh, 1.0, t, nullptr, nullptr);
+  if (flag < 0) {
+    destroy_state_vector(fresh);
+    check(flag, "Resize");
+  }
+  destroy_state_vector(y_);
+  y_ = fresh;
+  n_ = y.size();
+  restart_at(t, h);
 }
 
 double ArkodeIntegrator::next_step() const {

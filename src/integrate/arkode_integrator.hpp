@@ -39,6 +39,7 @@ struct ArkodeStepModule {
   int (*set_stop_time)(void*, sunrealtype);
   int (*evolve)(void*, sunrealtype, N_Vector, sunrealtype*, int);
   int (*reset)(void*, sunrealtype, N_Vector);
+  int (*resize)(void*, N_Vector, sunrealtype, sunrealtype, ARKVecResizeFn, void*);
   int (*get_current_step)(void*, sunrealtype*);
   int (*get_last_step)(void*, sunrealtype*);
   char* (*return_flag_name)(long);  // malloc'ed
@@ -66,6 +67,12 @@ class ArkodeIntegrator : public TimeIntegrator {
   // restarted from the checkpoint continues bit for bit.
   void restart_at(double t, double h) final;
   double next_step() const final;  // the step size ARKODE will attempt next
+  // Whether the last failure of an evolve call named a non-finite right-hand side entry of this
+  // process's state (several ranks: the rank holding the particle).
+  bool failure_names_entry() const { return non_finite_.found; }
+  // A run over several ranks after a migration: the state becomes y (this rank's new particles, any
+  // length), and the integrator is re-initialised at t as by restart_at(t, h).
+  void resize(const std::vector<double>& y, double t, double h);
 
  protected:
   // Creates the context and the state vector y0 at t0; the derived constructor then creates the
@@ -110,7 +117,11 @@ class ArkodeIntegrator : public TimeIntegrator {
  private:
   static int stability_cb(N_Vector y, double t, double* hstab, void* user_data) noexcept;
   void evolve(double tout, int itask);
+  N_Vector new_state_vector(std::size_t n);
+  void destroy_state_vector(N_Vector v);
   const ArkodeStepModule& module_;
+  StateVectorFactory factory_;
+  AnyRank any_rank_;
   StabilityFunction stab_;
   std::size_t n_;
   double t_;

@@ -5,6 +5,9 @@
 #include <functional>
 #include <string>
 
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_nvector.h>
+
 namespace arksph {
 
 using RhsFunction = std::function<void(double t, const double* y, double* ydot)>;
@@ -14,6 +17,17 @@ using StabilityFunction = std::function<double(double t, const double* y)>;
 // ("particle id 12: acceleration ax = nan").
 using EntryDescription = std::function<std::string(std::size_t i, double value)>;
 
+// How the integrator makes its state vector of a given local length, and frees it. Empty (the
+// default): a serial vector (serial_vector.hpp). A run over several MPI ranks gives a vector whose
+// norms span every rank (distributed/mpi_state_vector.hpp), so that all ranks take the same steps.
+struct StateVectorFactory {
+  std::function<N_Vector(sunindextype local_length, SUNContext ctx)> make;
+  std::function<void(N_Vector)> destroy;
+};
+// Several ranks: whether `local` holds on any rank (collective; every rank calls it at the same
+// point). Empty: one process.
+using AnyRank = std::function<bool(bool local)>;
+
 struct StepOptions {
   double fixed_dt = 0;  // > 0: fixed step; 0: adaptive
   double rtol = 1e-4, atol = 1e-8;
@@ -21,6 +35,10 @@ struct StepOptions {
   StabilityFunction stability;  // adaptive mode: h <= stability(t, y)
   double initial_dt = 0;        // adaptive mode: first step (ARKODE does not apply the stability fn to it)
   EntryDescription describe_entry;  // for the message when the right-hand side is not finite (else the index)
+  StateVectorFactory state_vector;  // empty: serial
+  // Several ranks: a right-hand side that is not finite on one rank is a failed evaluation on all
+  // (each rank returns the same flag to ARKODE, which then retries or gives up everywhere).
+  AnyRank any_rank;
 };
 
 }  // namespace arksph

@@ -27,9 +27,16 @@ std::vector<std::array<double, 3>> period_shifts(const Domain& domain) {
 
 void HaloExchange::exchange(const Communicator& comm, const Decomposition& decomposition, const ParticleFields& owned,
                             double cutoff, ParticleFields& halo) {
-  const Domain& domain = decomposition.grid().domain();
+  if (decomposition.ranks() != comm.size()) throw std::invalid_argument("halo: the decomposition is for another number of ranks");
+  std::vector<Box> boxes;
+  for (int r = 0; r < decomposition.ranks(); ++r) boxes.push_back(decomposition.box(r));
+  exchange(comm, decomposition.grid().domain(), boxes, owned, cutoff, halo);
+}
+
+void HaloExchange::exchange(const Communicator& comm, const Domain& domain, const std::vector<Box>& boxes,
+                            const ParticleFields& owned, double cutoff, ParticleFields& halo) {
   const int dim = owned.dim, ranks = comm.size(), me = comm.rank();
-  if (decomposition.ranks() != ranks) throw std::invalid_argument("halo: the decomposition is for another number of ranks");
+  if (boxes.size() != static_cast<std::size_t>(ranks)) throw std::invalid_argument("halo: one box per rank expected");
   if (owned.size() > std::numeric_limits<std::uint32_t>::max()) throw std::length_error("halo: too many particles");
   for (int a = 0; a < dim; ++a)
     if (domain.periodic[a] && !(cutoff < domain.period(a)))
@@ -39,7 +46,7 @@ void HaloExchange::exchange(const Communicator& comm, const Decomposition& decom
 
   // The box around this rank's particles (its own box after migration), to list the (rank, shift)
   // pairs that can receive anything at all.
-  Box around = decomposition.box(me);
+  Box around = boxes[static_cast<std::size_t>(me)];
   double x[3] = {0, 0, 0};
   for (std::size_t i = 0; i < owned.size(); ++i) {
     owned.position(i, x);
@@ -57,7 +64,7 @@ void HaloExchange::exchange(const Communicator& comm, const Decomposition& decom
   for (int r = 0; r < ranks; ++r)
     for (std::uint32_t s = 0; s < shifts_.size(); ++s) {
       if (r == me && s == 0) continue;
-      const Box box = decomposition.box(r);
+      const Box& box = boxes[static_cast<std::size_t>(r)];
       if (around.distance2(box, shifts_[s], dim) < cut2) targets.push_back({r, s, box});
     }
 

@@ -33,6 +33,11 @@ class HaloExchange {
   // then by the source's particle index, then by shift.
   void exchange(const Communicator& comm, const Decomposition& decomposition, const ParticleFields& owned,
                 double cutoff, ParticleFields& halo);
+  // The same rule with rank q's box given as boxes[q] (the same list on every rank) instead of its
+  // block of the decomposition: a run whose particles have left their blocks since the last
+  // migration passes each rank's block grown around its particles (distributed/halo_rhs.hpp).
+  void exchange(const Communicator& comm, const Domain& domain, const std::vector<Box>& boxes,
+                const ParticleFields& owned, double cutoff, ParticleFields& halo);
   // Collective. Sends the current values of `fields` (indices into ParticleFields::field) of the same
   // particles, with the same shifts added to the coordinates among them, into the same halo slots.
   // `owned` must hold the particles of the last exchange at the same indices (no migration since).

@@ -29,10 +29,10 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
     : particles_(particles),
       kernel_(std::move(kernel)),
       terms_(std::move(terms)),
-      ghosts_(scene, kernel_.radius(), terms_),
+      ghosts_(scene, kernel_.radius(), terms_, options.periodic_images),
       neighbors_(scene, kernel_.radius()) {
   for (int k = 0; k < scene.dimension; ++k) {
-    periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
+    periodic_[k] = options.periodic_images && scene.sides[2 * k].kind == SideKind::periodic;
     lo_[k] = scene.min[k];
     len_[k] = scene.max[k] - scene.min[k];
   }

@@ -34,6 +34,10 @@ struct RhsOptions {
   // The pair list stored at every f, for a caller that walks fields().pairs after eval(t, y, ydot)
   // (the constrained projection).
   bool pairs_at_every_f = false;
+  // Periodic sides give images (boundary/ghosts) and positions are wrapped into the box. Off for
+  // one rank of a decomposed run, whose periodic neighbours arrive as halo copies at shifted
+  // positions (distributed/halo_rhs.hpp). Read by the constructor only.
+  bool periodic_images = true;
 };
 
 class RhsEvaluator {

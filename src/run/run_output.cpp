@@ -173,6 +173,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("status", result.exit_code == 0 ? "ok" : result.interrupted ? "interrupted" : "failed");
   if (result.exit_code != 0) j.set("failure", result.message);
   j.set("frames", frames_);
+  j.set("mpi", mpi_);
   j.set("terms", Json(model_.terms));
   if (scene_.imex) {  // ARKStep IMEX counters (time.imex)
     Json im = Json::object();

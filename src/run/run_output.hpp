@@ -34,6 +34,9 @@ class RunOutput {
   // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
   void resume(const OutputHistory& earlier);
   // method.reorder_every: re-sorts that changed the order, and their time (summary.json).
+  // summary.json "mpi": the ranks of the run (1 for one process) and, over several ranks, what the
+  // decomposition did (distributed/distributed_run.hpp).
+  void set_mpi(const Json& mpi) { mpi_ = mpi; }
   void set_reorders(long count, double seconds) {
     reorders_ = count;
     reorder_seconds_ = seconds;
@@ -56,6 +59,7 @@ class RunOutput {
   double steady_time_ = -1;  // the output time at which the flow was found steady (-1: not yet)
   double eps_max_window_ = 0;  // Poiseuille: max eps for t* in [0.5, 2]
   double output_seconds_ = 0, diagnostic_seconds_ = 0;
+  Json mpi_ = Json::object().set("ranks", 1);
   long reorders_ = -1;  // -1: re-sorting off
   double reorder_seconds_ = 0;
 };

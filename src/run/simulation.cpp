@@ -39,23 +39,6 @@ double max_speed_of(const StateLayout& L, const double* y) {
   return std::sqrt(m2);
 }
 
-// Adaptive mode: steps that t + dt can barely or no longer resolve, several in a row, mean the run
-// will never reach time.end. One such step alone is not enough: ARKODE may end the approach to a
-// stop time (an output or checkpoint time) with a sliver of a step. `tiny`: the count so far.
-constexpr int kTinyStepsInARow = 10;
-void check_step_size(double t, double dt, double end, int& tiny) {
-  const double floor = 1e-12 * std::max(std::abs(t), end);
-  tiny = (dt < floor || t + dt == t) ? tiny + 1 : 0;
-  if (tiny >= kTinyStepsInARow) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "t = %.9g: the adaptive time step %.3g underflowed (below 1e-12 max(|t|, time.end) = %.3g, %d steps "
-                  "in a row): the run cannot reach time.end",
-                  t, dt, floor, kTinyStepsInARow);
-    throw NumericalFailure(buf);
-  }
-}
-
 void print_run_header(const Scene& scene, const Model& model) {
   std::printf("arksph: scene '%s' (%s)\n", scene.name.c_str(), scene.source.c_str());
   std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s\n", scene.scheme.c_str(),

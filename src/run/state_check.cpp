@@ -22,9 +22,9 @@ StateChecker::StateChecker(const Scene& scene, const Model& model) : scene_(scen
   margin_ = model.rhs->kernel().radius();
 }
 
-void StateChecker::check(double t, const double* y) const {
-  const StateLayout& L = model_.rhs->layout();
-  const auto& ids = model_.particles.id;
+void StateChecker::check(double t, const double* y) const { check(t, y, model_.rhs->layout(), model_.particles.id); }
+
+void StateChecker::check(double t, const double* y, const StateLayout& L, const std::vector<std::int64_t>& ids) const {
   auto fail = [&](std::size_t a, const std::string& what) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "t = %.9g, particle id %lld: ", t, static_cast<long long>(ids[a]));
@@ -48,6 +48,26 @@ void StateChecker::check(double t, const double* y) const {
       const double rho = y[L.rho() + a];
       if (!std::isfinite(rho) || rho <= 0) fail(a, "density " + std::to_string(rho) + " is not positive and finite");
     }
+  }
+}
+
+// Adaptive mode: steps that t + dt can barely or no longer resolve, several in a row, mean the run
+// will never reach time.end. One such step alone is not enough: ARKODE may end the approach to a
+// stop time (an output or checkpoint time) with a sliver of a step. `tiny`: the count so far.
+namespace {
+constexpr int kTinyStepsInARow = 10;
+}  // namespace
+
+void check_step_size(double t, double dt, double end, int& tiny) {
+  const double floor = 1e-12 * std::max(std::abs(t), end);
+  tiny = (dt < floor || t + dt == t) ? tiny + 1 : 0;
+  if (tiny >= kTinyStepsInARow) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "t = %.9g: the adaptive time step %.3g underflowed (below 1e-12 max(|t|, time.end) = %.3g, %d steps "
+                  "in a row): the run cannot reach time.end",
+                  t, dt, floor, kTinyStepsInARow);
+    throw NumericalFailure(buf);
   }
 }
 

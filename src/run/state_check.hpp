@@ -13,6 +13,9 @@ class StateChecker {
  public:
   StateChecker(const Scene& scene, const Model& model);
   void check(double t, const double* y) const;
+  // The same for a state y in `layout` whose particles have the ids `ids` (one rank's particles of a
+  // decomposed run).
+  void check(double t, const double* y, const StateLayout& layout, const std::vector<std::int64_t>& ids) const;
   double speed_limit() const { return speed_limit_; }
 
  private:
@@ -20,6 +23,11 @@ class StateChecker {
   const Model& model_;
   double speed_limit_, margin_;
 };
+
+// Adaptive mode: steps that t + dt can barely or no longer resolve, several in a row, mean the run
+// will never reach time.end. Throws NumericalFailure when step dt at t is the tenth such in a row;
+// `tiny`: the count so far.
+void check_step_size(double t, double dt, double end, int& tiny);
 
 // Names entry i of a right-hand side vector in `layout` for a failure message: "particle id 12:
 // acceleration ax = nan" (ids: the particle ids in the current order of the state).

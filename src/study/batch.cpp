@@ -89,6 +89,7 @@ pid_t launch(const std::string& exe, const std::vector<std::string>& args, const
       close(fd);
     }
     setenv("OMP_NUM_THREADS", "1", 0);  // parallelism comes from the jobs; keep a user's setting
+    forget_launcher_ranks();            // the child is one process, not a rank of the launch
     execv(exe.c_str(), argv.data());
     std::perror("arksph batch: exec");
     _exit(127);

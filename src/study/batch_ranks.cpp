@@ -135,6 +135,12 @@ LauncherRanks launcher_ranks_from_environment() {
   return lr;
 }
 
+void forget_launcher_ranks() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_LOCAL_SIZE", "PMI_SIZE",
+                           "PMI_RANK", "MPI_LOCALNRANKS"})
+    unsetenv(name);
+}
+
 void publish_batch_group(const std::string& folder, const LauncherRanks& ranks) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(folder, ec))

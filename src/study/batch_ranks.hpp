@@ -32,6 +32,11 @@ struct LauncherRanks {
 // host and parent pid (the launcher's local daemon). InputError for an inconsistent rank/size.
 LauncherRanks launcher_ranks_from_environment();
 
+// Removes the rank and size variables read above from this process's environment: a batch's child
+// runs are single processes, and `arksph run` under a launcher of several processes runs decomposed
+// over them (docs/parallel.md).
+void forget_launcher_ranks();
+
 // Rank 0, holding the folder lock: removes the files of an earlier launch, writes the group file.
 void publish_batch_group(const std::string& folder, const LauncherRanks& ranks);
 

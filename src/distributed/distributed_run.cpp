@@ -1,0 +1,307 @@
+#include "distributed/distributed_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "boundary/wall_reflection.hpp"
+#include "core/errors.hpp"
+#include "core/scheme.hpp"
+#include "diagnostics/flow_metrics.hpp"
+#include "distributed/gather_state.hpp"
+#include "distributed/halo_rhs.hpp"
+#include "distributed/mpi_state_vector.hpp"
+#include "distributed/rank_particles.hpp"
+#include "distributed/rank_verdict.hpp"
+#include "integrate/erk_integrator.hpp"
+#include "parallel/migration.hpp"
+#include "parallel/rcb.hpp"
+#include "run/checkpointing.hpp"
+#include "run/interrupt.hpp"
+#include "run/output_folder.hpp"
+#include "run/progress.hpp"
+#include "run/run_output.hpp"
+#include "run/setup.hpp"
+#include "run/state_check.hpp"
+
+namespace arksph::distributed {
+
+namespace {
+
+// Raises on every rank what the ranks agreed on (all ranks hold the same verdict).
+void raise(const Verdict& v) {
+  if (v.code == 2) throw InputError(v.message);
+  if (v.code == 3) throw NumericalFailure(v.message);
+  if (v.code == 5) throw OutputError(v.message);
+  if (v.code != 0) throw std::runtime_error(v.message);
+}
+
+// Runs body on this rank; its InputError, OutputError or NumericalFailure becomes this rank's
+// verdict (2, 5, 3), which every rank then learns.
+template <class Body>
+void together(const parallel::Communicator& comm, Body&& body) {
+  Verdict mine;
+  try {
+    body();
+  } catch (const InputError& e) {
+    mine = {2, e.what()};
+  } catch (const OutputError& e) {
+    mine = {5, e.what()};
+  } catch (const NumericalFailure& e) {
+    mine = {3, e.what()};
+  }
+  raise(agree(comm, mine));
+}
+
+parallel::Domain domain_of(const Scene& scene) {
+  parallel::Domain d;
+  d.dim = scene.dimension;
+  for (int k = 0; k < scene.dimension; ++k) {
+    d.box.lo[k] = scene.min[k];
+    d.box.hi[k] = scene.max[k];
+    d.periodic[k] = scene.sides[2 * k].kind == SideKind::periodic;
+  }
+  return d;
+}
+
+double local_max_speed(const StateLayout& L, const double* y) {
+  double m2 = 0;
+  for (std::size_t a = 0; a < L.n; ++a) {
+    double s2 = 0;
+    for (int k = 0; k < L.dim; ++k) s2 += y[L.vel(k) + a] * y[L.vel(k) + a];
+    m2 = std::max(m2, s2);
+  }
+  return std::sqrt(m2);
+}
+
+parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector<std::int64_t>& counts, int ranks,
+                               const Scene& scene) {
+  try {
+    return parallel::Decomposition::rcb(grid, counts, ranks);
+  } catch (const std::exception& e) {  // fewer cells of side R than ranks
+    throw InputError(scene.source + ": " + std::to_string(ranks) +
+                     " ranks: the box cannot be split into that many blocks of cells of the kernel support (" +
+                     e.what() + ")");
+  }
+}
+
+}  // namespace
+
+void check_distributable(const Scene& scene, const RunOptions& options, int ranks) {
+  const std::string on =
+      " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
+  if (options.restart) throw InputError("--restart" + on);
+  if (!scheme_traits(scene.scheme).weakly_compressible)
+    throw InputError(scene.source + ": scheme " + scene.scheme + on);
+  if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
+  if (scene.checkpoint_every > 0) throw InputError(scene.source + ": output.checkpoint_every" + on);
+  if (scene.dimension != 2)
+    throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
+}
+
+RunResult run_distributed(const Scene& scene, const RunOptions& options, const parallel::Communicator& comm) {
+  using clock = std::chrono::steady_clock;
+  const auto wall_start = clock::now();
+  const int ranks = comm.size();
+  const bool root = comm.rank() == 0;
+  check_distributable(scene, options, ranks);
+
+  // Set-up: the whole model on every rank; the output folder on rank 0.
+  std::optional<Model> built;
+  together(comm, [&] { built.emplace(build_model(scene)); });
+  Model& model = *built;
+  std::unique_ptr<OutputFolder> folder;
+  std::string run_id;
+  together(comm, [&] {
+    if (!root) return;
+    folder = std::make_unique<OutputFolder>(scene.directory, scene.source);
+    if (!options.overwrite) folder->refuse_foreign_files();
+    folder->remove_run_outputs();
+    run_id = new_run_id();
+  });
+  RhsEvaluator& rhs = *model.rhs;
+  const StateLayout& layout = rhs.layout();
+  if (root) {
+    std::printf("arksph: scene '%s' (%s) on %d MPI ranks\n", scene.name.c_str(), scene.source.c_str(), ranks);
+    std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s, integrator %s\n",
+                scene.scheme.c_str(), model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str(),
+                scene.integrator.c_str());
+    std::printf("  output: %s (gathered on rank 0)\n", scene.directory.c_str());
+    std::fflush(stdout);
+  }
+  std::vector<double> y0(layout.size());
+  rhs.initial_state(y0.data());
+  rhs.eval(0.0, y0.data(), nullptr);  // the fields at t = 0: number density, the checker's speed bound
+  const std::vector<double> d0 = number_density(rhs.fields());
+
+  // The first decomposition, from the whole lattice (the same counts on every rank).
+  const parallel::CellGrid grid(domain_of(scene), rhs.kernel().radius());
+  parallel::ParticleFields positions(scene.dimension, scene.dimension);
+  positions.resize(layout.n);
+  for (std::size_t a = 0; a < layout.n; ++a) {
+    double x[3] = {0, 0, 0};
+    for (int k = 0; k < scene.dimension; ++k) x[k] = y0[layout.pos(k) + a];
+    grid.domain().wrap(x);
+    for (int k = 0; k < scene.dimension; ++k) positions.field[static_cast<std::size_t>(k)][a] = x[k];
+  }
+  std::optional<parallel::Decomposition> decomposition;
+  together(comm, [&] { decomposition.emplace(bisect(grid, parallel::count_per_cell(grid, positions), ranks, scene)); });
+  RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
+  HaloRhs f(scene, model, comm, mine);
+  f.set_decomposition(*decomposition);
+  const StateGather gather(model.particles.id, layout);
+
+  std::vector<double> y = mine.state();
+  {
+    std::vector<double> ydot(y.size());
+    f.eval(0.0, y.data(), ydot.data());  // the acceleration at t = 0 for the first step
+  }
+  ErkOptions eo = integrator_options(scene);
+  eo.state_vector = mpi_state_vector(comm.comm());
+  eo.any_rank = [&comm](bool local) { return comm.max(static_cast<std::int64_t>(local)) > 0; };
+  eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(mine.layout(), mine.ids(), i, v); };
+  const auto stable = [&](const double* yl) {
+    return stable_step(scene, model, comm.max(local_max_speed(mine.layout(), yl)),
+                       comm.max(f.local_max_acceleration()));
+  };
+  eo.stability = [&](double, const double* yl) { return stable(yl); };
+  eo.initial_dt = stable(y.data());
+  ErkIntegrator integrator([&f](double t, const double* yl, double* yd) { f.eval(t, yl, yd); }, y, 0.0, eo);
+  std::vector<double>().swap(y);
+
+  std::unique_ptr<RunOutput> out;
+  together(comm, [&] {
+    if (root) out = std::make_unique<RunOutput>(scene, model, options, run_id);
+  });
+  if (root && integrator.workaround_installed()) out->add_term("erkstep:fsal_bug_workaround");
+  const long diag_before = rhs.evaluations();
+  together(comm, [&] {
+    const std::vector<double> all = gather.gather(comm, mine);
+    if (root) out->write(0.0, all.data(), d0, integrator.stats());
+  });
+
+  const StateChecker checker(scene, model);
+  Progress progress(scene.end, options.quiet || !root);
+  long reflections = 0, migrations = 0;
+  double migration_seconds = 0;
+  double t = 0;
+  int frame = 1;
+  int tiny_steps = 0;
+  RunResult result;
+  // At a sync point: the particles to the owners of their positions by a new bisection, the
+  // integrator re-initialised on the new local states.
+  const auto migrate = [&](double at) {
+    const auto t0 = clock::now();
+    const double h = integrator.next_step();
+    mine.load(integrator.state());
+    parallel::ParticleFields& F = mine.fields();
+    const RankFieldIndex& ix = mine.index();
+    for (std::size_t a = 0; a < F.size(); ++a) {
+      double x[3] = {0, 0, 0};
+      for (int k = 0; k < ix.dim; ++k) x[k] = F.field[static_cast<std::size_t>(ix.state_pos(k))][a];
+      grid.domain().wrap(x);
+      for (int k = 0; k < ix.dim; ++k) F.field[static_cast<std::size_t>(ix.seen(k))][a] = x[k];
+    }
+    std::vector<std::int64_t> counts = parallel::count_per_cell(grid, F);
+    comm.sum_in_place(counts);
+    decomposition.emplace(bisect(grid, counts, ranks, scene));
+    parallel::migrate(comm, *decomposition, F);
+    mine.refresh_ids();
+    f.set_decomposition(*decomposition);
+    integrator.resize(mine.state(), at, h);
+    ++migrations;
+    migration_seconds += std::chrono::duration<double>(clock::now() - t0).count();
+  };
+  try {
+    while (t < scene.end) {
+      double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;
+      if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
+      double dt_max = 0;
+      while (t < t_next) {
+        t = integrator.step(t_next);
+        const ErkStats st = integrator.stats();
+        dt_max = std::max(dt_max, st.last_step);
+        Verdict v;
+        try {
+          if (scene.dt == 0) check_step_size(t, st.last_step, scene.end, tiny_steps);  // the same on every rank
+        } catch (const NumericalFailure& e) {
+          v = {3, e.what()};
+        }
+        const long r = static_cast<long>(
+            comm.sum(static_cast<std::int64_t>(WallReflection(scene, mine.layout()).apply(integrator.state()))));
+        if (r) {  // sync point: every rank re-initialises
+          reflections += r;
+          integrator.reset(t);
+        }
+        if (scene.reorder_every > 0 && st.steps % scene.reorder_every == 0) migrate(t);
+        try {
+          checker.check(t, integrator.state(), mine.layout(), mine.ids());
+        } catch (const NumericalFailure& e) {
+          if (!v.code) v = {3, e.what()};
+        }
+        if (!v.code && st.steps >= scene.max_steps)
+          v = {3, "time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " + std::to_string(t) +
+                      " before time.end"};
+        if (const int sig = pending_interrupt(); sig && !v.code)
+          v = {128 + sig, std::string("interrupted by ") + interrupt_name(sig) + " at t = " + std::to_string(t) +
+                              " (no checkpoint: runs over several ranks write none)"};
+        v = agree(comm, v);
+        if (v.code) {
+          result.exit_code = v.code;
+          result.message = v.message;
+          break;
+        }
+        progress.step(t, st.steps, st.last_step);
+      }
+      if (result.exit_code) break;
+      ErkStats st = integrator.stats();
+      st.last_step = dt_max;
+      together(comm, [&] {
+        const std::vector<double> all = gather.gather(comm, mine);
+        if (root) out->write(t, all.data(), d0, st);
+      });
+      progress.frame(t, st.steps, dt_max);
+      ++frame;
+      const bool steady = comm.max(static_cast<std::int64_t>(root && out->steady())) > 0;
+      if (steady && t < scene.end) {
+        if (root) {
+          result.steady_time = t;
+          result.steady_rate = out->steady_rate();
+        }
+        break;
+      }
+    }
+  } catch (const NumericalFailure& e) {  // ARKODE gave up: on every rank alike (global norms, agreed flags)
+    const Verdict v = agree(comm, {3, e.what(), integrator.failure_names_entry()});
+    result.exit_code = v.code;
+    result.message = v.message;
+  } catch (const OutputError& e) {
+    result.exit_code = 5;
+    result.message = e.what();
+  }
+  progress.finish();
+  const ErkStats st = integrator.stats();
+  const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
+  Verdict last{result.exit_code, result.message};
+  if (root) {
+    Json mpi = Json::object();
+    mpi.set("ranks", ranks).set("halo_exchanges", f.exchanges()).set("migrations", migrations);
+    out->set_mpi(mpi);
+    if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
+    try {
+      out->finish(result, st, wall, rhs.evaluations() - diag_before + 1, reflections, f.exchanges());
+    } catch (const OutputError& e) {
+      last = {result.exit_code ? result.exit_code : 5,
+              result.message.empty() ? e.what() : result.message + "; " + e.what()};
+    }
+  }
+  last = agree(comm, last);
+  result.exit_code = last.code;
+  result.message = last.message;
+  return result;
+}
+
+}  // namespace arksph::distributed

@@ -1,0 +1,34 @@
+// `arksph run` started by an MPI launcher on several processes (`mpirun -n P arksph run SCENE`):
+// one run decomposed over the P ranks (docs/parallel.md, "Runs over several ranks").
+//
+//   set-up      every rank builds the whole model (lattice, initial state) as one process would;
+//               the recursive coordinate bisection (parallel/rcb.hpp) of the particles per cell of
+//               side R gives each rank its particles (distributed/rank_particles.hpp)
+//   stepping    ERKStep on each rank over its own particles, the state an MPIPlusX vector with
+//               global norms (mpi_state_vector.hpp): every rank takes the same steps; f(t, y) with
+//               the halo (halo_rhs.hpp); the stability limit from the largest speed and
+//               acceleration over the ranks
+//   sync points at the steps where a one-process run re-sorts its particles (method.reorder_every)
+//               the particles migrate to the owners of their positions by a new bisection, and the
+//               integrator is re-initialised there (restart_at, as after a re-sort); wall
+//               reflections are counted over the ranks and re-initialise every rank
+//   agreement   after every step the ranks agree on failures and signals (rank_verdict.hpp)
+//   output      rank 0 gathers the state (gather_state.hpp) and writes what a one-process run
+//               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations"}
+//
+// What runs only on one process is refused with InputError (exit 2): see check_distributable.
+#pragma once
+#include "core/scene.hpp"
+#include "parallel/communicator.hpp"
+#include "run/simulation.hpp"
+
+namespace arksph::distributed {
+
+// InputError (one line) for what a run over several ranks does not do yet: schemes other than
+// WCSPH, time.imex, output.checkpoint_every, --restart, dimension other than 2.
+void check_distributable(const Scene& scene, const RunOptions& options, int ranks);
+
+// Collective over `comm` (size > 1). The RunResult is the same on every rank.
+RunResult run_distributed(const Scene& scene, const RunOptions& options, const parallel::Communicator& comm);
+
+}  // namespace arksph::distributed

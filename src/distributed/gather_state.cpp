@@ -1,0 +1,39 @@
+#include "distributed/gather_state.hpp"
+
+#include <bit>
+#include <stdexcept>
+
+namespace arksph::distributed {
+
+StateGather::StateGather(const std::vector<std::int64_t>& ids, const StateLayout& layout) : layout_(layout) {
+  for (std::size_t i = 0; i < ids.size(); ++i) place_[ids[i]] = i;
+}
+
+std::vector<double> StateGather::gather(const parallel::Communicator& comm, const RankParticles& mine) const {
+  // Records: the id's bits, then the state entries of the particle in layout order.
+  const StateLayout L = mine.layout();
+  const std::size_t per = L.n ? L.size() / L.n : 0;
+  const std::size_t stride = 1 + 2 * static_cast<std::size_t>(L.dim) + (L.has_density ? 1 : 0) + (L.has_energy ? 1 : 0);
+  if (L.n && per + 1 != stride) throw std::logic_error("state gather: unexpected layout");
+  const std::vector<double> y = mine.state();
+  std::vector<double> records;
+  records.reserve(L.n * stride);
+  for (std::size_t a = 0; a < L.n; ++a) {
+    records.push_back(std::bit_cast<double>(mine.fields().id[a]));
+    for (std::size_t b = 0; b + 1 < stride; ++b) records.push_back(y[b * L.n + a]);
+  }
+  const std::vector<double> all = comm.gatherv(records, 0);
+  if (comm.rank() != 0) return {};
+  std::vector<double> out(layout_.size());
+  const std::size_t n = layout_.n;
+  if (all.size() != n * stride) throw std::logic_error("state gather: the ranks hold another number of particles");
+  for (std::size_t r = 0; r < n; ++r) {
+    const double* rec = all.data() + r * stride;
+    const auto it = place_.find(static_cast<std::int64_t>(std::bit_cast<std::uint64_t>(rec[0])));
+    if (it == place_.end()) throw std::logic_error("state gather: unknown particle id");
+    for (std::size_t b = 0; b + 1 < stride; ++b) out[b * n + it->second] = rec[1 + b];
+  }
+  return out;
+}
+
+}  // namespace arksph::distributed

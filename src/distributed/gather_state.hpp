@@ -1,0 +1,29 @@
+// The whole state of a decomposed run on rank 0, for the output: every rank sends its particles'
+// ids and state fields (one gather), rank 0 puts them at their particles' places in its own model
+// (a one-process model of the whole scene) and writes frames, timeseries.csv and summary.json as a
+// one-process run does. Rank 0 thus holds the whole state: the size limit of this output
+// (docs/parallel.md).
+#pragma once
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "core/particles.hpp"
+#include "distributed/rank_particles.hpp"
+#include "parallel/communicator.hpp"
+
+namespace arksph::distributed {
+
+class StateGather {
+ public:
+  // `ids`: the particle ids of the model on rank 0, in the order of its state vector (`layout`).
+  StateGather(const std::vector<std::int64_t>& ids, const StateLayout& layout);
+  // Collective. Rank 0: the whole state in the model's layout; other ranks: empty.
+  std::vector<double> gather(const parallel::Communicator& comm, const RankParticles& mine) const;
+
+ private:
+  StateLayout layout_;
+  std::unordered_map<std::int64_t, std::size_t> place_;  // id -> index in the model
+};
+
+}  // namespace arksph::distributed

@@ -1,0 +1,165 @@
+#include "distributed/halo_rhs.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/kernel.hpp"
+#include "rhs/terms.hpp"
+
+namespace arksph::distributed {
+
+namespace {
+// The neighbourhoods a particle's sums depend on: its own and its neighbours' (see the header).
+constexpr double kHaloSupports = 2.0;
+// The Verlet skin of the neighbour search (rhs/neighbor_cache.cpp), as a fraction of the support.
+constexpr double kSkinFraction = 0.15;
+}  // namespace
+
+HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, RankParticles& owned)
+    : scene_(scene),
+      model_(model),
+      comm_(comm),
+      owned_(owned),
+      radius_(model.rhs->kernel().radius()),
+      skin_(kSkinFraction * radius_),
+      cutoff_(kHaloSupports * radius_ + skin_) {
+  const RankFieldIndex& ix = owned.index();
+  for (int k = 0; k < ix.dim; ++k) update_fields_.push_back(ix.seen(k));
+  for (int k = 0; k < ix.dim; ++k) update_fields_.push_back(ix.vel(k));
+  if (ix.density) update_fields_.push_back(ix.rho());
+  if (ix.energy) update_fields_.push_back(ix.e());
+  offset_.resize(static_cast<std::size_t>(ix.dim));
+  ref_.resize(static_cast<std::size_t>(ix.dim));
+}
+
+void HaloRhs::set_decomposition(const parallel::Decomposition& decomposition) {
+  decomposition_ = &decomposition;
+  evaluator_.reset();  // the particles were migrated: exchange at the next eval
+}
+
+void HaloRhs::exchange() {
+  parallel::ParticleFields& F = owned_.fields();
+  const RankFieldIndex& ix = owned_.index();
+  const parallel::Domain& domain = decomposition_->grid().domain();
+  const std::size_t n = F.size();
+  parallel::Box mine = decomposition_->box(comm_.rank());
+  double x[3] = {0, 0, 0};
+  for (std::size_t a = 0; a < n; ++a) {
+    for (int k = 0; k < ix.dim; ++k) x[k] = F.field[static_cast<std::size_t>(ix.state_pos(k))][a];
+    domain.wrap(x);
+    for (int k = 0; k < ix.dim; ++k) {
+      F.field[static_cast<std::size_t>(ix.seen(k))][a] = x[k];
+      if (std::isfinite(x[k])) {
+        mine.lo[k] = std::min(mine.lo[k], x[k]);
+        mine.hi[k] = std::max(mine.hi[k], x[k]);
+      }
+    }
+  }
+  for (int k = 0; k < ix.dim; ++k) {
+    const auto& seen = F.field[static_cast<std::size_t>(ix.seen(k))];
+    const auto& state = F.field[static_cast<std::size_t>(ix.state_pos(k))];
+    auto& off = offset_[static_cast<std::size_t>(k)];
+    off.resize(n);
+    for (std::size_t a = 0; a < n; ++a) off[a] = state[a] - seen[a];
+    ref_[static_cast<std::size_t>(k)] = seen;
+  }
+  const std::vector<parallel::Box> boxes = comm_.allgatherv(std::vector<parallel::Box>{mine});
+  exchange_.exchange(comm_, domain, boxes, F, cutoff_, halo_);
+  build_evaluator();
+  ++exchanges_;
+}
+
+void HaloRhs::build_evaluator() {
+  const parallel::ParticleFields& F = owned_.fields();
+  const RankFieldIndex& ix = owned_.index();
+  ParticleSet set;
+  set.dim = ix.dim;
+  set.n = F.size() + halo_.size();
+  set.dx = model_.particles.dx;
+  set.init_energy = model_.particles.init_energy;
+  const auto joined = [&](int field) {
+    std::vector<double> v(F.field[static_cast<std::size_t>(field)]);
+    const auto& h = halo_.field[static_cast<std::size_t>(field)];
+    v.insert(v.end(), h.begin(), h.end());
+    return v;
+  };
+  set.mass = joined(ix.mass());
+  set.rho0 = joined(ix.rho0());
+  for (double p : joined(ix.phase())) set.phase.push_back(static_cast<std::int32_t>(p));
+  for (std::uint64_t id : F.id) set.id.push_back(static_cast<std::int64_t>(id));
+  for (std::uint64_t id : halo_.id) set.id.push_back(static_cast<std::int64_t>(id));
+  for (int k = 0; k < ix.dim; ++k) {
+    set.init_pos[k] = joined(ix.seen(k));
+    set.init_vel[k] = joined(ix.vel(k));
+  }
+  RhsOptions options;
+  options.periodic_images = false;
+  evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),
+                                              terms_from_scene(scene_, model_.sound_speed), options);
+}
+
+void HaloRhs::eval(double t, const double* y, double* ydot) {
+  parallel::ParticleFields& F = owned_.fields();
+  const RankFieldIndex& ix = owned_.index();
+  const std::size_t n = F.size();
+  owned_.load(y);
+  bool fresh = !evaluator_;
+  if (!fresh) {  // the seen positions moved with the state; the largest displacement over the ranks
+    double moved2 = 0;
+    for (std::size_t a = 0; a < n; ++a) {
+      double d2 = 0;
+      for (int k = 0; k < ix.dim; ++k) {
+        const std::size_t kk = static_cast<std::size_t>(k);
+        const double x = F.field[static_cast<std::size_t>(ix.state_pos(k))][a] - offset_[kk][a];
+        F.field[static_cast<std::size_t>(ix.seen(k))][a] = x;
+        d2 += (x - ref_[kk][a]) * (x - ref_[kk][a]);
+      }
+      moved2 = std::max(moved2, d2);  // NaN positions: the state checks, not here
+    }
+    fresh = comm_.max(moved2) > 0.25 * skin_ * skin_;
+  }
+  if (fresh)
+    exchange();
+  else
+    exchange_.update(comm_, F, update_fields_, halo_);
+
+  // The evaluator's state: this rank's particles, then the halo copies.
+  const StateLayout& L = evaluator_->layout();
+  y_all_.resize(L.size());
+  const auto place = [&](int field, std::size_t at) {
+    const auto& own = F.field[static_cast<std::size_t>(field)];
+    const auto& copy = halo_.field[static_cast<std::size_t>(field)];
+    std::copy(own.begin(), own.end(), y_all_.begin() + static_cast<long>(at));
+    std::copy(copy.begin(), copy.end(), y_all_.begin() + static_cast<long>(at + n));
+  };
+  for (int k = 0; k < ix.dim; ++k) {
+    place(ix.seen(k), L.pos(k));
+    place(ix.vel(k), L.vel(k));
+  }
+  if (L.has_density) place(ix.rho(), L.rho());
+  if (L.has_energy) place(ix.e(), L.energy());
+  ydot_all_.resize(L.size());
+  evaluator_->eval(t, y_all_.data(), ydot_all_.data());
+
+  // This rank's derivatives, in its own layout.
+  const StateLayout mine = owned_.layout();
+  const auto take = [&](std::size_t from, std::size_t to) {
+    std::copy(ydot_all_.begin() + static_cast<long>(from), ydot_all_.begin() + static_cast<long>(from + n), ydot + to);
+  };
+  double a2 = 0;
+  for (std::size_t a = 0; a < n; ++a) {
+    double s = 0;
+    for (int k = 0; k < ix.dim; ++k) s += ydot_all_[L.vel(k) + a] * ydot_all_[L.vel(k) + a];
+    a2 = std::max(a2, s);
+  }
+  max_accel_ = std::sqrt(a2);
+  if (!ydot) return;
+  for (int k = 0; k < ix.dim; ++k) {
+    take(L.pos(k), mine.pos(k));
+    take(L.vel(k), mine.vel(k));
+  }
+  if (L.has_density) take(L.rho(), mine.rho());
+  if (L.has_energy) take(L.energy(), mine.energy());
+}
+
+}  // namespace arksph::distributed

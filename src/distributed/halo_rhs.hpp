@@ -1,0 +1,72 @@
+// f(t, y) on one rank of a decomposed run. The rank's state y holds its own particles only; the
+// right-hand side runs the ordinary evaluator (rhs/evaluator.hpp) over the rank's particles followed
+// by the halo, copies of the other ranks' particles (and periodic images of its own) within
+//   cutoff = 2 R + skin        (R the kernel support, skin = 0.15 R as the Verlet skin)
+// of its box (parallel/halo.hpp), and keeps the derivatives of its own particles. The evaluator
+// treats the halo copies as particles of its own: their derivatives are discarded, but the values
+// they compute on the way and hand to the rank's particles are complete. Two supports, because a
+// particle's sums read values its neighbours computed over their own neighbourhoods (density by
+// summation, kernel correction, the density-diffusion gradient, velocity gradients at wall
+// images); the copies within R of the rank's particles have their whole neighbourhood within 2 R.
+// Wall images of the rank's particles and of the copies come from the evaluator's ghosts, which
+// build walls only (RhsOptions::periodic_images off): the periodic images are halo copies.
+//
+// At each evaluation the copies take the state's new positions, velocities, density and energy
+// from their owners (HaloExchange::update, one all-to-all). When some particle has moved more than
+// skin / 2 since the last exchange (the largest displacement over all ranks), the halo is exchanged
+// anew from the current positions and the evaluator rebuilt over the new set. The halo rule uses
+// each rank's block of the decomposition grown around its particles' current positions, so the
+// halo stays complete however far particles have left their block since the last migration.
+//
+// Positions: the state keeps the positions of a one-process run (never wrapped). At an exchange
+// each rank position is brought into the box along the periodic axes, and the offset between the
+// two is kept until the next exchange: the evaluator sees positions that move continuously.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "distributed/rank_particles.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/halo.hpp"
+#include "parallel/rcb.hpp"
+#include "rhs/evaluator.hpp"
+#include "run/setup.hpp"
+
+namespace arksph::distributed {
+
+class HaloRhs {
+ public:
+  HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, RankParticles& owned);
+  // The decomposition the rank's particles were last migrated by; the next eval exchanges anew.
+  void set_decomposition(const parallel::Decomposition& decomposition);
+  // Collective. ydot = f(t, y) for this rank's particles (ydot null: nothing stored).
+  void eval(double t, const double* y, double* ydot);
+  // The largest |du/dt| of this rank's particles at the last eval.
+  double local_max_acceleration() const { return max_accel_; }
+  long exchanges() const { return exchanges_; }  // halo exchanges (with a new evaluator) so far
+  double cutoff() const { return cutoff_; }
+  std::size_t halo_size() const { return halo_.size(); }
+
+ private:
+  void exchange();
+  void build_evaluator();
+
+  const Scene& scene_;
+  const Model& model_;
+  const parallel::Communicator& comm_;
+  RankParticles& owned_;
+  const parallel::Decomposition* decomposition_ = nullptr;
+  double radius_, skin_, cutoff_;
+  parallel::HaloExchange exchange_;
+  parallel::ParticleFields halo_;
+  std::vector<int> update_fields_;           // sent at every eval
+  std::vector<std::vector<double>> offset_;  // per axis: state position - seen position
+  std::vector<std::vector<double>> ref_;     // per axis: seen positions at the exchange
+  std::unique_ptr<RhsEvaluator> evaluator_;
+  std::vector<double> y_all_, ydot_all_;
+  double max_accel_ = 0;
+  long exchanges_ = 0;
+};
+
+}  // namespace arksph::distributed

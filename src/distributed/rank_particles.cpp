@@ -1,0 +1,73 @@
+#include "distributed/rank_particles.hpp"
+
+namespace arksph::distributed {
+
+RankParticles::RankParticles(const ParticleSet& all, const StateLayout& layout, const double* y,
+                             const parallel::Decomposition& decomposition, int rank) {
+  ix_.dim = layout.dim;
+  ix_.density = layout.has_density;
+  ix_.energy = layout.has_energy;
+  p_ = parallel::ParticleFields(ix_.dim, ix_.count());
+  double x[3] = {0, 0, 0};
+  const parallel::Domain& domain = decomposition.grid().domain();
+  for (std::size_t a = 0; a < layout.n; ++a) {
+    for (int k = 0; k < ix_.dim; ++k) x[k] = y[layout.pos(k) + a];
+    domain.wrap(x);
+    if (decomposition.owner(x) != rank) continue;
+    p_.id.push_back(static_cast<std::uint64_t>(all.id[a]));
+    for (int k = 0; k < ix_.dim; ++k) {
+      p_.field[static_cast<std::size_t>(ix_.seen(k))].push_back(x[k]);
+      p_.field[static_cast<std::size_t>(ix_.state_pos(k))].push_back(y[layout.pos(k) + a]);
+      p_.field[static_cast<std::size_t>(ix_.vel(k))].push_back(y[layout.vel(k) + a]);
+    }
+    if (ix_.density) p_.field[static_cast<std::size_t>(ix_.rho())].push_back(y[layout.rho() + a]);
+    if (ix_.energy) p_.field[static_cast<std::size_t>(ix_.e())].push_back(y[layout.energy() + a]);
+    p_.field[static_cast<std::size_t>(ix_.mass())].push_back(all.mass[a]);
+    p_.field[static_cast<std::size_t>(ix_.rho0())].push_back(all.rho0[a]);
+    p_.field[static_cast<std::size_t>(ix_.phase())].push_back(all.phase.empty() ? 0.0 : all.phase[a]);
+  }
+  refresh_ids();
+}
+
+StateLayout RankParticles::layout() const {
+  StateLayout L;
+  L.n = size();
+  L.dim = ix_.dim;
+  L.has_density = ix_.density;
+  L.has_energy = ix_.energy;
+  return L;
+}
+
+std::vector<double> RankParticles::state() const {
+  const StateLayout L = layout();
+  std::vector<double> y(L.size());
+  const auto copy = [&](int field, std::size_t at) {
+    const auto& f = p_.field[static_cast<std::size_t>(field)];
+    std::copy(f.begin(), f.end(), y.begin() + static_cast<long>(at));
+  };
+  for (int k = 0; k < ix_.dim; ++k) {
+    copy(ix_.state_pos(k), L.pos(k));
+    copy(ix_.vel(k), L.vel(k));
+  }
+  if (ix_.density) copy(ix_.rho(), L.rho());
+  if (ix_.energy) copy(ix_.e(), L.energy());
+  return y;
+}
+
+void RankParticles::load(const double* y) {
+  const StateLayout L = layout();
+  const auto take = [&](int field, std::size_t at) {
+    auto& f = p_.field[static_cast<std::size_t>(field)];
+    f.assign(y + at, y + at + L.n);
+  };
+  for (int k = 0; k < ix_.dim; ++k) {
+    take(ix_.state_pos(k), L.pos(k));
+    take(ix_.vel(k), L.vel(k));
+  }
+  if (ix_.density) take(ix_.rho(), L.rho());
+  if (ix_.energy) take(ix_.e(), L.energy());
+}
+
+void RankParticles::refresh_ids() { ids_.assign(p_.id.begin(), p_.id.end()); }
+
+}  // namespace arksph::distributed

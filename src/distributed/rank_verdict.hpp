@@ -1,0 +1,25 @@
+// How the ranks of a decomposed run agree on an outcome: after every step each rank brings its own
+// (0, or an exit code with a message: a failed state check, a signal, an output error on rank 0),
+// and every rank leaves with the largest code and the message of the lowest rank that had it
+// (preferring one that names the particle). A
+// failure on one rank thus ends every rank with the same exit code at the same point, and no rank is
+// left waiting in a collective call.
+#pragma once
+#include <string>
+
+#include "parallel/communicator.hpp"
+
+namespace arksph::distributed {
+
+struct Verdict {
+  int code = 0;  // 0: go on
+  std::string message;
+  // Among ranks with the same code, a message that names the failing particle wins over one that
+  // cannot (ARKODE gives up on every rank, but only the rank of the particle knows which it was).
+  bool names_particle = false;
+};
+
+// Collective.
+Verdict agree(const parallel::Communicator& comm, const Verdict& mine);
+
+}  // namespace arksph::distributed

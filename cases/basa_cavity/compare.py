@@ -35,6 +35,7 @@ FOAM = os.path.join(ROOT, "bench", "openfoam_cavity")
 GHIA = os.path.join(ROOT, "bench", "ghia")
 LETTER = {"direct": "A", "two_pass": "B", "violeau": "C", "cleary": "D", "morris": "E"}
 CORRECTIONS = ["none", "shepard", "bonet_lok"]
+COLOUR = {"A": "tab:blue", "B": "tab:orange", "C": "tab:green", "D": "tab:red", "E": "tab:purple"}
 END = {100: 20.0, 1000: 80.0}
 SPACING = 0.02  # 50 x 50 particles
 INTERP_H = 1.3 * SPACING  # arksph's centreline interpolation (src/diagnostics/ghia.cpp)
@@ -80,6 +81,7 @@ def measure(re, folder):
     row["final_time"] = float(summary.get("final_time", ts[-1]["t"] if ts else 0.0))
     row["wall_seconds"] = summary.get("wall_seconds", float("nan"))
     row["steps"] = summary.get("steps", 0)
+    row["wall_reflections"] = summary.get("wall_reflections", 0)
     t_sph = [float(r["t"]) for r in ts]
     ke_sph = [float(r["kinetic_energy"]) for r in ts]
     t_foam, ke_foam = foam_series(re, "kinetic_energy")
@@ -153,7 +155,7 @@ def plot_ke(re, series, out):
         ax.plot(t_foam, ke_foam, "k-", lw=2, label="OpenFOAM 200²")
         for (letter, c), (t, ke) in sorted(series.items()):
             if c == corr:
-                ax.plot(t, ke, lw=1, label=f"model {letter}")
+                ax.plot(t, ke, lw=1, color=COLOUR.get(letter), label=f"model {letter}")
         ax.set_title(f"Re = {re}, correction {corr}", fontsize=10)
         ax.set_xlabel("t")
         ax.set_ylim(0, 1.6 * max(ke_foam))
@@ -180,8 +182,8 @@ def plot_centrelines(re, profiles, out):
         for (letter, c), p in sorted(profiles.items()):
             if c != corr or p is None:
                 continue
-            ax_u.plot(p["u"][1], p["u"][0], lw=1, label=f"model {letter}")
-            ax_v.plot(p["v"][0], p["v"][1], lw=1, label=f"model {letter}")
+            ax_u.plot(p["u"][1], p["u"][0], lw=1, color=COLOUR.get(letter), label=f"model {letter}")
+            ax_v.plot(p["v"][0], p["v"][1], lw=1, color=COLOUR.get(letter), label=f"model {letter}")
         ax_u.set_title(f"u(y) on x = 0.5, Re = {re}, {corr}", fontsize=10)
         ax_v.set_title(f"v(x) on y = 0.5, Re = {re}, {corr}", fontsize=10)
         ax_u.set_xlabel("u")
@@ -197,7 +199,8 @@ def plot_centrelines(re, profiles, out):
 
 
 FIELDS = ["model", "viscosity_model", "correction", "status", "final_time", "ke_end", "ke_end_rel_err", "ke_rms_rel",
-          "ke_max_rel", "u_rms_foam", "v_rms_foam", "u_rms_ghia", "v_rms_ghia", "steps", "wall_seconds"]
+          "ke_max_rel", "u_rms_foam", "v_rms_foam", "u_rms_ghia", "v_rms_ghia", "steps", "wall_reflections",
+          "wall_seconds"]
 
 
 def main():
@@ -221,12 +224,13 @@ def main():
     plot_ke(re, series, os.path.join(out, f"ke_re{re}.png"))
     plot_centrelines(re, profiles, os.path.join(out, f"centrelines_re{re}.png"))
     print("| model | correction | status (t reached) | KE end rel. err | KE r.m.s. / max | u r.m.s. FOAM / Ghia "
-          "| v r.m.s. FOAM / Ghia | wall s |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| v r.m.s. FOAM / Ghia | reflections | wall s |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['model']} | {r['correction']} | {r['status']} ({r['final_time']:.4g}) | {r['ke_end_rel_err']:+.3f} "
               f"| {r['ke_rms_rel']:.3f} / {r['ke_max_rel']:.3g} | {r['u_rms_foam']:.4f} / {r['u_rms_ghia']:.4f} "
-              f"| {r['v_rms_foam']:.4f} / {r['v_rms_ghia']:.4f} | {r['wall_seconds']:.0f} |")
+              f"| {r['v_rms_foam']:.4f} / {r['v_rms_ghia']:.4f} | {r['wall_reflections']} "
+              f"| {r['wall_seconds']:.0f} |")
 
 
 if __name__ == "__main__":

@@ -13,9 +13,9 @@ For every run folder in RUNS_DIR (model and correction read from its batch_run.t
   Ghia (arksph's own ghia_*_rms) and from OpenFOAM's 200^2 profile interpolated linearly to Ghia's
   points;
 - wall time and status from summary.json.
-Writes OUT_DIR/re<RE>_results.csv, ke_re<RE>.png and centrelines_re<RE>.png (profiles from the
+Writes OUT_DIR/re<RE>_results.csv, ke_re<RE>.png, centrelines_re<RE>.png (profiles from the
 last frame, interpolated as arksph interpolates for Ghia: Shepard-normalised Wendland C2 at
-h = 1.3 dx over the fluid particles).
+h = 1.3 dx over the fluid particles) and particles_re<RE>.png (the last frames, coloured by speed).
 """
 import csv
 import glob
@@ -112,8 +112,8 @@ def wendland_c2(q):
     return (1 - q / 2) ** 4 * (2 * q + 1) if q < 2 else 0.0
 
 
-def last_frame_profiles(folder, n=101):
-    """u(y) on x = 0.5 and v(x) on y = 0.5 from the last VTP frame (None without vtk or frames)."""
+def last_frame(folder):
+    """Positions and velocities of the last VTP frame (None without vtk or frames)."""
     frames = sorted(glob.glob(os.path.join(folder, "particles_*.vtp")))
     try:
         import vtk
@@ -126,8 +126,15 @@ def last_frame_profiles(folder, n=101):
     reader.SetFileName(frames[-1])
     reader.Update()
     data = reader.GetOutput()
-    pos = vtk_to_numpy(data.GetPoints().GetData())
-    vel = vtk_to_numpy(data.GetPointData().GetArray("velocity"))
+    return vtk_to_numpy(data.GetPoints().GetData()), vtk_to_numpy(data.GetPointData().GetArray("velocity"))
+
+
+def last_frame_profiles(folder, n=101):
+    """u(y) on x = 0.5 and v(x) on y = 0.5 from the last VTP frame (None without vtk or frames)."""
+    frame = last_frame(folder)
+    if frame is None:
+        return None
+    pos, vel = frame
     out = {}
     for line in ("u", "v"):
         s_list, v_list = [], []
@@ -164,6 +171,32 @@ def plot_ke(re, series, out):
     axes[0].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+def plot_particles(re, frames, out):
+    """The particles of each run's last frame coloured by speed (Basa Fig. 8 shows velocity vectors)."""
+    letters = sorted({k[0] for k in frames})
+    fig, axes = plt.subplots(len(CORRECTIONS), len(letters), figsize=(2.9 * len(letters), 8.6), squeeze=False)
+    for i, corr in enumerate(CORRECTIONS):
+        for j, letter in enumerate(letters):
+            ax = axes[i][j]
+            ax.set_xticks([])
+            ax.set_yticks([])
+            ax.set_aspect("equal")
+            f = frames.get((letter, corr))
+            if f is None:
+                ax.set_title(f"{letter}, {corr}: no run", fontsize=8)
+                continue
+            (pos, vel), status, t = f
+            speed = (vel[:, 0] ** 2 + vel[:, 1] ** 2) ** 0.5
+            ax.scatter(pos[:, 0], pos[:, 1], c=speed, s=1.2, cmap="viridis", vmin=0, vmax=1)
+            ax.set_xlim(0, 1)
+            ax.set_ylim(0, 1)
+            ax.set_title(f"{letter}, {corr}: {status}, t = {t:.3g}", fontsize=8)
+    fig.suptitle(f"Re = {re}: particles at the last output, coloured by speed (0-1)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=100)
     plt.close(fig)
 
 
@@ -208,13 +241,16 @@ def main():
         sys.exit(__doc__)
     re, runs, out = int(sys.argv[1]), sys.argv[2], sys.argv[3]
     os.makedirs(out, exist_ok=True)
-    rows, series, profiles = [], {}, {}
+    rows, series, profiles, frames = [], {}, {}, {}
     for folder in sorted(glob.glob(os.path.join(runs, "*", "batch_run.txt"))):
         folder = os.path.dirname(folder)
         row, s = measure(re, folder)
         rows.append(row)
         series[(row["model"], row["correction"])] = s
         profiles[(row["model"], row["correction"])] = last_frame_profiles(folder) if row["status"] == "ok" else None
+        frame = last_frame(folder)
+        if frame is not None:
+            frames[(row["model"], row["correction"])] = (frame, row["status"], row["final_time"])
     rows.sort(key=lambda r: (r["model"], CORRECTIONS.index(r["correction"])))
     with open(os.path.join(out, f"re{re}_results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
@@ -223,6 +259,8 @@ def main():
             w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
     plot_ke(re, series, os.path.join(out, f"ke_re{re}.png"))
     plot_centrelines(re, profiles, os.path.join(out, f"centrelines_re{re}.png"))
+    if frames:
+        plot_particles(re, frames, os.path.join(out, f"particles_re{re}.png"))
     print("| model | correction | status (t reached) | KE end rel. err | KE r.m.s. / max | u r.m.s. FOAM / Ghia "
           "| v r.m.s. FOAM / Ghia | reflections | wall s |")
     print("|---|---|---|---|---|---|---|---|---|")

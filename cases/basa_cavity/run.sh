@@ -21,12 +21,16 @@ case "$re" in
 esac
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-runs=${2:-$root/runs/basa_cavity_re$re}
 python=${PYTHON:-/usr/bin/python3}
 
 cd "$root"
+# Without RUNS_DIR the sweep's own folder (runs/basa_cavity_re<RE>), so that a plain
+# `arksph batch` of the sweep and this script share (and skip) the same runs.
+runs=${2:-runs/basa_cavity_re$re}
+out=()
+[[ -n "${2:-}" ]] && out=(--out "$2")
 status=0
-OMP_NUM_THREADS=1 ./build/arksph batch "$here/sweep_re$re.toml" --jobs 1 --out "$runs" || status=$?
+OMP_NUM_THREADS=1 ./build/arksph batch "cases/basa_cavity/sweep_re$re.toml" --jobs 1 "${out[@]}" || status=$?
 # exit 3: some run blew up or ran out of steps; its rows are part of the comparison.
 if (( status != 0 && status != 3 )); then exit "$status"; fi
 "$python" "$here/compare.py" "$re" "$runs" "$here/measured"

@@ -196,7 +196,7 @@ def plot_particles(re, frames, out):
             ax.set_title(f"{letter}, {corr}: {status}, t = {t:.3g}", fontsize=8)
     fig.suptitle(f"Re = {re}: particles at the last output, coloured by speed (0-1)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(out, dpi=100)
+    fig.savefig(out, dpi=60)
     plt.close(fig)
 
 

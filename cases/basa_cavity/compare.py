@@ -168,32 +168,33 @@ def plot_ke(re, series, out):
         ax.set_ylim(0, 1.6 * max(ke_foam))
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("kinetic energy")
-    axes[0].legend(fontsize=8)
+    for ax in axes:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
 
 
 def plot_particles(re, frames, out):
-    """The particles of each run's last frame coloured by speed (Basa Fig. 8 shows velocity vectors)."""
-    letters = sorted({k[0] for k in frames})
-    fig, axes = plt.subplots(len(CORRECTIONS), len(letters), figsize=(2.9 * len(letters), 8.6), squeeze=False)
-    for i, corr in enumerate(CORRECTIONS):
-        for j, letter in enumerate(letters):
-            ax = axes[i][j]
-            ax.set_xticks([])
-            ax.set_yticks([])
-            ax.set_aspect("equal")
-            f = frames.get((letter, corr))
-            if f is None:
-                ax.set_title(f"{letter}, {corr}: no run", fontsize=8)
-                continue
-            (pos, vel), status, t = f
-            speed = (vel[:, 0] ** 2 + vel[:, 1] ** 2) ** 0.5
-            ax.scatter(pos[:, 0], pos[:, 1], c=speed, s=1.2, cmap="viridis", vmin=0, vmax=1)
-            ax.set_xlim(0, 1)
-            ax.set_ylim(0, 1)
-            ax.set_title(f"{letter}, {corr}: {status}, t = {t:.3g}", fontsize=8)
+    """The particles of each run's last frame coloured by speed (Basa Fig. 8 shows velocity vectors):
+    one panel per run, by correction (rows of the full matrix) and model."""
+    keys = sorted(frames, key=lambda k: (CORRECTIONS.index(k[1]), k[0]))
+    ncols = min(5, len(keys))
+    nrows = (len(keys) + ncols - 1) // ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(2.9 * ncols, 2.9 * nrows + 0.4), squeeze=False)
+    for ax in axes.flat:
+        ax.axis("off")
+    for ax, (letter, corr) in zip(axes.flat, keys):
+        (pos, vel), status, t = frames[(letter, corr)]
+        speed = (vel[:, 0] ** 2 + vel[:, 1] ** 2) ** 0.5
+        ax.axis("on")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_aspect("equal")
+        ax.scatter(pos[:, 0], pos[:, 1], c=speed, s=1.2, cmap="viridis", vmin=0, vmax=1)
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+        ax.set_title(f"{letter}, {corr}: {status}, t = {t:.3g}", fontsize=8)
     fig.suptitle(f"Re = {re}: particles at the last output, coloured by speed (0-1)", fontsize=10)
     fig.tight_layout()
     fig.savefig(out, dpi=60)
@@ -225,7 +226,8 @@ def plot_centrelines(re, profiles, out):
             ax.grid(alpha=0.3)
     axes[0][0].set_ylabel("y")
     axes[1][0].set_ylabel("v")
-    axes[0][0].legend(fontsize=8)
+    for ax in axes[0]:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)

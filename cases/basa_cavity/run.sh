@@ -7,7 +7,7 @@
 # RE = 100: sweep_re100.toml, models A-E x corrections none / shepard / bonet_lok to t = 10;
 # RE = 1000: sweep_re1000.toml, four model-correction pairs to t = 30 (the sweeps say why these
 # end times, and how to set Basa's 20 and 80).
-# One run at a time (OMP_NUM_THREADS=1): about 16 s of one shared core per unit of time. Finished runs
+# One run at a time (OMP_NUM_THREADS=1): 8-30 s of one shared core per unit of time. Finished runs
 # are skipped on a second call (arksph batch resumes). Writes cases/basa_cavity/measured/
 # re<RE>_results.csv, ke_re<RE>.png, centrelines_re<RE>.png and prints the table.
 # Needs build/arksph and a python3 with matplotlib (and vtk for the profile plots); PYTHON

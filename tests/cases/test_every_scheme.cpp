@@ -60,7 +60,7 @@ const std::vector<std::string> kScenes = {
     "cases/spin_down/scene.toml",          "cases/sweeps/taylor_green_small.toml",
     "cases/spin_down/defaults.toml",       "cases/taylor_green/scene.toml",
     "cases/hydrostatic_tank/scene.toml",   "cases/cavity_re10000/scene.toml",
-    "cases/cavity_re1000/defaults.toml",
+    "cases/cavity_re1000/defaults.toml",   "cases/basa_cavity/scene.toml",
 };
 
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
@@ -177,6 +177,7 @@ TEST_CASE(CASE_TEST("spin_down")) {
 }
 TEST_CASE(CASE_TEST("spin_down defaults")) { check_case("cases/spin_down/defaults.toml"); }
 TEST_CASE(CASE_TEST("taylor_green")) { check_case("cases/taylor_green/scene.toml"); }
+TEST_CASE(CASE_TEST("basa_cavity")) { check_case("cases/basa_cavity/scene.toml"); }
 TEST_CASE(CASE_TEST("cavity_re10000")) { check_case("cases/cavity_re10000/scene.toml"); }
 TEST_CASE(CASE_TEST("hydrostatic_tank")) { check_case("cases/hydrostatic_tank/scene.toml"); }
 TEST_CASE(CASE_TEST("spin_down periodic")) { check_case("cases/spin_down/periodic/scene.toml"); }

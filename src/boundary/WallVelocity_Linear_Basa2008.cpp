@@ -7,6 +7,11 @@
 
 namespace arksph {
 
+namespace {
+// Smallest wall distance, in units of dx, that the extrapolation divides by.
+constexpr double kMinDistance = 0.5;
+}  // namespace
+
 void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const double* x, const double* y, double* u,
                                double* v) const {
   const double* pos[2] = {x, y};
@@ -30,7 +35,10 @@ void LinearWallVelocity::apply(const GhostSet& g, std::size_t n_real, const doub
       const std::size_t gi = n_real + i;
       const long a = nearest_[wb.of(pos[t][gi])];
       if (a < 0) continue;  // no fluid near this stretch of wall: keep the mirror value
-      const double d_near = std::abs(pos[k][a] - wb.plane);
+      // Extrapolated from at least dx/2, the lattice's first row: from a particle closer to the wall
+      // the ratio d_ghost / d_near would amplify its slip without bound (in the driven cavity,
+      // particles pushed against a wall gave ghost speeds many times the lid's).
+      const double d_near = std::max(std::abs(pos[k][a] - wb.plane), kMinDistance * dx_);
       vel[t][gi] = w_t - g.wall_dist[i] / d_near * (vel[t][a] - w_t);
     }
   });

@@ -3,7 +3,8 @@
 // wall shear measured by the fluid particle nearest to the wall at the same tangential position,
 //   u_g,t = w_t - (d_g / d_near) (u_near,t - w_t),
 // so the shear field continues into the wall at constant rate (Basa Fig. 3). The normal component
-// stays mirrored. Corner images keep their mirror rule. 2D only.
+// stays mirrored. Corner images keep their mirror rule. 2D only. d_near is held at dx/2 or more
+// (the first lattice row), so a particle pressed against the wall does not blow the ghosts up.
 #pragma once
 #include <vector>
 

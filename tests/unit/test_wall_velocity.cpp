@@ -116,3 +116,20 @@ TEST_CASE("wall velocity: quadratic extrapolation continues a parabolic profile 
   CHECK(lin.max_abs > 0.05);
   CHECK(mir.max_abs > lin.max_abs);
 }
+
+// Linear extrapolation from a particle pressed against the wall. The first row of the Couette channel
+// is moved to 0.02 dx above the bottom wall, and the fluid slips at both walls by 0.01
+// (u = y + 0.01). Behind the bottom wall, ghosts down to 3 dx deep would take
+// -(d_g / d_near)(u_near - w), i.e. up to -(0.15 / 0.001) 0.011 = -1.65, faster than the lid. With
+// d_near held at dx/2 they take at most (0.15 / 0.025) 0.011 = 0.066. The error against the slipping
+// profile's continuation y + 0.01 is then about 0.08 at both walls. The bound of 0.5 sits between
+// that and the 4.3 measured without the bound.
+TEST_CASE("wall velocity: linear extrapolation from a particle pressed against the wall stays bounded") {
+  const std::vector<std::string> pressed = {"initial.offset=[\"0\", \"-0.024*(y < 0.03)\"]",
+                                            "initial.velocity=[\"y + 0.01\", \"0\"]",
+                                            "boundary.top.velocity=[1, 0]"};
+  const GhostError e = ghost_error("linear", pressed, [](double y) { return y + 0.01; });
+  MESSAGE("largest ghost error behind the walls: " << e.max_abs);
+  CHECK(e.count > 0);
+  CHECK(e.max_abs < 0.5);
+}

@@ -55,6 +55,20 @@ Scene vortex(const std::vector<std::string>& sets) {
   std::ostringstream warnings;
   return read_scene_text(kVortex, "<test>", sets, warnings);
 }
+
+// Heun-Euler and Bogacki-Shampine on the vortex (written into `scratch`) at dt = 4e-3 ... 1e-3,
+// against Dormand-Prince at dt / 8.
+OrderStudy vortex_order_study(const testing::ScratchDir& scratch) {
+  const std::string scene_path = scratch / "vortex.toml";
+  std::ofstream(scene_path) << kVortex;
+  OrderStudy study;
+  study.scene = scene_path;
+  study.tables = {"ARKODE_HEUN_EULER_2_1_2", "ARKODE_BOGACKI_SHAMPINE_4_2_3"};
+  study.dt = {4e-3, 2e-3, 1e-3};
+  study.reference_table = "ARKODE_DORMAND_PRINCE_7_4_5";
+  study.reference_dt_divisor = 8;
+  return study;
+}
 }  // namespace
 
 // Tolerance 0.05 of the pressure's amplitude 0.5: the spatial error of Q and of the approximate
@@ -86,16 +100,7 @@ TEST_CASE("constrained projection: the pressure of the Taylor-Green vortex at t 
 // the step count is small; 0.6 on the longer runs of the order-study vortex).
 TEST_CASE("constrained projection: Heun-Euler and Bogacki-Shampine keep their orders, C&R's does not") {
   const testing::ScratchDir scratch("constrained_order");
-  const std::string scene_path = scratch / "vortex.toml";
-  {
-    std::ofstream(scene_path) << kVortex;
-  }
-  OrderStudy study;
-  study.scene = scene_path;
-  study.tables = {"ARKODE_HEUN_EULER_2_1_2", "ARKODE_BOGACKI_SHAMPINE_4_2_3"};
-  study.dt = {4e-3, 2e-3, 1e-3};
-  study.reference_table = "ARKODE_DORMAND_PRINCE_7_4_5";
-  study.reference_dt_divisor = 8;
+  OrderStudy study = vortex_order_study(scratch);
   const auto fits = run_order_study(study, false);
   REQUIRE(fits.size() == 2);
   for (const auto& fit : fits) {
@@ -178,17 +183,8 @@ TEST_CASE("constrained projection: the P-W correction's velocity removes the den
 // then moves every particle) with Heun-Euler and Bogacki-Shampine, within 0.3 as above.
 TEST_CASE("constrained projection: with the P-W correction's velocity the orders hold") {
   const testing::ScratchDir scratch("constrained_pw_order");
-  const std::string scene_path = scratch / "vortex.toml";
-  {
-    std::ofstream(scene_path) << kVortex;
-  }
-  OrderStudy study;
-  study.scene = scene_path;
+  OrderStudy study = vortex_order_study(scratch);
   study.sets = {"initial.offset=[\"0.003*sin(2*pi*y+1)\", \"0.003*cos(4*pi*x+2)\"]", kPerturbedAtRest[3]};
-  study.tables = {"ARKODE_HEUN_EULER_2_1_2", "ARKODE_BOGACKI_SHAMPINE_4_2_3"};
-  study.dt = {4e-3, 2e-3, 1e-3};
-  study.reference_table = "ARKODE_DORMAND_PRINCE_7_4_5";
-  study.reference_dt_divisor = 8;
   const auto fits = run_order_study(study, false);
   REQUIRE(fits.size() == 2);
   for (const auto& fit : fits) {

@@ -67,16 +67,6 @@ parallel::Domain domain_of(const Scene& scene) {
   return d;
 }
 
-double local_max_speed(const StateLayout& L, const double* y) {
-  double m2 = 0;
-  for (std::size_t a = 0; a < L.n; ++a) {
-    double s2 = 0;
-    for (int k = 0; k < L.dim; ++k) s2 += y[L.vel(k) + a] * y[L.vel(k) + a];
-    m2 = std::max(m2, s2);
-  }
-  return std::sqrt(m2);
-}
-
 parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector<std::int64_t>& counts, int ranks,
                                const Scene& scene) {
   try {
@@ -164,7 +154,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   eo.any_rank = [&comm](bool local) { return comm.max(static_cast<std::int64_t>(local)) > 0; };
   eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(mine.layout(), mine.ids(), i, v); };
   const auto stable = [&](const double* yl) {
-    return stable_step(scene, model, comm.max(local_max_speed(mine.layout(), yl)),
+    return stable_step(scene, model, comm.max(max_speed(mine.layout(), yl)),
                        comm.max(f.local_max_acceleration()));
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };

@@ -108,6 +108,16 @@ Model build_model(const Scene& scene) {
   return model;
 }
 
+double max_speed(const StateLayout& L, const double* y) {
+  double m2 = 0;
+  for (std::size_t a = 0; a < L.n; ++a) {
+    double s2 = 0;
+    for (int k = 0; k < L.dim; ++k) s2 += y[L.vel(k) + a] * y[L.vel(k) + a];
+    m2 = std::max(m2, s2);
+  }
+  return std::sqrt(m2);
+}
+
 double stable_step(const Scene& scene, const Model& model, double max_speed, double max_accel) {
   const double h = model.h;
   double wall_speed = 0;

@@ -30,6 +30,8 @@ Model build_model(const Scene& scene);
 //   viscous dt <= 0.125 h^2 / nu (eq. 36; not with time.imex, where viscosity is implicit),
 //   force dt <= 0.25 sqrt(h / |a|max) (eq. 37).
 double stable_step(const Scene& scene, const Model& model, double max_speed, double max_accel);
+// Largest particle speed |u| of the state y (the particles in layout L).
+double max_speed(const StateLayout& L, const double* y);
 
 // ERKStep options from the scene (table, fixed or adaptive step).
 ErkOptions integrator_options(const Scene& scene);

@@ -29,16 +29,6 @@
 namespace arksph {
 
 namespace {
-double max_speed_of(const StateLayout& L, const double* y) {
-  double m2 = 0;
-  for (std::size_t a = 0; a < L.n; ++a) {
-    double s2 = 0;
-    for (int k = 0; k < L.dim; ++k) s2 += y[L.vel(k) + a] * y[L.vel(k) + a];
-    m2 = std::max(m2, s2);
-  }
-  return std::sqrt(m2);
-}
-
 void print_run_header(const Scene& scene, const Model& model) {
   std::printf("arksph: scene '%s' (%s)\n", scene.name.c_str(), scene.source.c_str());
   std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s\n", scene.scheme.c_str(),
@@ -133,9 +123,9 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   ErkOptions eo = integrator_options(scene);
   eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(layout, model.particles.id, i, v); };
   eo.stability = [&](double, const double* y) {
-    return stable_step(scene, model, max_speed_of(layout, y), rhs.max_acceleration());
+    return stable_step(scene, model, max_speed(layout, y), rhs.max_acceleration());
   };
-  eo.initial_dt = stable_step(scene, model, max_speed_of(layout, y0.data()), rhs.max_acceleration());
+  eo.initial_dt = stable_step(scene, model, max_speed(layout, y0.data()), rhs.max_acceleration());
   if (model.projection && !model.projection->constrained()) {
     Projection* proj = model.projection.get();
     eo.postprocess = [proj](double t, double* y) { proj->project(t, y); };

@@ -56,6 +56,16 @@ Scene vortex(const std::vector<std::string>& sets) {
   return read_scene_text(kVortex, "<test>", sets, warnings);
 }
 
+// y at t = 0 and yd = f(0, y) with the constrained pressure (and any correction velocity) applied.
+void constrained_start(Model& model, std::vector<double>& y, std::vector<double>& yd) {
+  RhsEvaluator& rhs = *model.rhs;
+  y.assign(rhs.layout().size(), 0.0);
+  yd.assign(y.size(), 0.0);
+  rhs.initial_state(y.data());
+  rhs.eval(0.0, y.data(), yd.data());
+  model.projection->constrain(y.data(), yd.data(), nullptr, nullptr);
+}
+
 // Heun-Euler and Bogacki-Shampine on the vortex (written into `scratch`) at dt = 4e-3 ... 1e-3,
 // against Dormand-Prince at dt / 8.
 OrderStudy vortex_order_study(const testing::ScratchDir& scratch) {
@@ -79,10 +89,8 @@ TEST_CASE("constrained projection: the pressure of the Taylor-Green vortex at t 
   Model model = build_model(scene);
   RhsEvaluator& rhs = *model.rhs;
   const StateLayout& L = rhs.layout();
-  std::vector<double> y(L.size()), yd(L.size());
-  rhs.initial_state(y.data());
-  rhs.eval(0.0, y.data(), yd.data());
-  model.projection->constrain(y.data(), yd.data(), nullptr, nullptr);
+  std::vector<double> y, yd;
+  constrained_start(model, y, yd);
   const std::vector<double>& p = model.projection->pressure();
   double worst = 0;
   for (std::size_t a = 0; a < L.n; ++a) {
@@ -148,10 +156,8 @@ double decay_ratio(const Scene& scene) {
   Model model = build_model(scene);
   RhsEvaluator& rhs = *model.rhs;
   const StateLayout& L = rhs.layout();
-  std::vector<double> y(L.size()), yd(L.size());
-  rhs.initial_state(y.data());
-  rhs.eval(0.0, y.data(), yd.data());
-  model.projection->constrain(y.data(), yd.data(), nullptr, nullptr);
+  std::vector<double> y, yd;
+  constrained_start(model, y, yd);
   const FluidFields& f = rhs.fields();
   std::vector<double> s, ds, vx(yd.begin() + L.pos(0), yd.begin() + L.pos(0) + L.n),
       vy(yd.begin() + L.pos(1), yd.begin() + L.pos(1) + L.n);

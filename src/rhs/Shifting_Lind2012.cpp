@@ -18,6 +18,7 @@
 // with du_a . grad f_a = sum_b V_b (f_b - f_a) du_a . grad_a W_ab. Ghosts count as neighbours, so a
 // wall is no free surface: the lattice next to it is not pulled apart.
 #include <cmath>
+#include <limits>
 
 #include "core/param_builder.hpp"
 #include "kernels/kernel.hpp"
@@ -27,12 +28,17 @@
 #include "rhs/density_diffusion_sum.hpp"
 #include "rhs/particle_term.hpp"
 #include "rhs/reference_speed.hpp"
+#include "rhs/shifting_stability.hpp"
 #include "rhs/term_registry.hpp"
 
 namespace arksph {
 namespace {
 
 constexpr int kAntiClumpN = 4;  // Lind et al. 2012 eq. 10
+// Explicit steps keep the linearised shifting stable (rhs/shifting_stability.hpp) when rate * dt <= 2,
+// the reach of every Runge-Kutta table of order <= 2 along the negative real axis (higher orders
+// reach further); 0.75 of it leaves room for a lattice disordered past the linear analysis.
+constexpr double kStableRateStep = 0.75 * 2.0;
 
 class Shifting final : public ParticleTerm<Shifting> {
  public:
@@ -45,6 +51,8 @@ class Shifting final : public ParticleTerm<Shifting> {
         density_(density) {}
   std::string name() const override { return "regularisation:shifting"; }
   bool moves_particles() const override { return true; }
+  double max_step() const override { return max_step_; }
+  void set_max_step(double dt) { max_step_ = dt; }
   bool reads_kernel_value() const override { return anti_clump_ != 0.0; }
   // delta-SPH without a hydrostatic part sums over the V_b (rho_b - rho_a) that the carried density
   // visits already (rhs/density_diffusion_sum.hpp): the evaluator lets this term add it. The pressure
@@ -180,6 +188,7 @@ class Shifting final : public ParticleTerm<Shifting> {
   double anti_clump_; // R
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
   double clump_scale_; // R^(1/4) / W(dx): R (W / W(dx))^4 = ((clump_scale_ W)^2)^2
+  double max_step_ = std::numeric_limits<double>::infinity();  // set_max_step
   bool density_;      // the density is a state (continuity equation): carried too
   bool diffuse_ = false;        // delta-SPH taken over (take_over)
   double diffusion_coeff_ = 0;  // its 2 delta h c
@@ -198,10 +207,14 @@ Part<TermFactory> regularisation_shifting() {
             double speed = part_param<double>(s, "method.shifting_speed");
             if (speed <= 0) speed = flow_speed(s);
             const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
-            return std::make_unique<Shifting>(part_param<double>(s, "method.shifting_coefficient"), speed,
-                                              part_param<double>(s, "method.shifting_limit"), h,
-                                              kernel.W(s.spacing), std::pow(s.spacing, s.dimension),
-                                              part_param<double>(s, "method.shifting_anti_clumping"), density);
+            const double coefficient = part_param<double>(s, "method.shifting_coefficient");
+            const double anti_clump = part_param<double>(s, "method.shifting_anti_clumping");
+            auto term = std::make_unique<Shifting>(coefficient, speed, part_param<double>(s, "method.shifting_limit"),
+                                                   h, kernel.W(s.spacing), std::pow(s.spacing, s.dimension),
+                                                   anti_clump, density);
+            const double rate = coefficient * speed / h * shifting_stiffness(kernel, s.spacing, anti_clump);
+            if (rate > 0) term->set_max_step(kStableRateStep / rate);
+            return term;
           },
           {number("method.shifting_coefficient", 12.0).in(at_least(0))
                .doc("A of the shifting velocity du = -A h U grad C (Lind et al. 2012 eq. 8 with D = A h U dt)"),

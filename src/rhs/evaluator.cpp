@@ -90,6 +90,12 @@ void RhsEvaluator::set_options(const RhsOptions& options) {
   }
 }
 
+double RhsEvaluator::max_step() const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const auto& t : terms_) dt = std::min(dt, t->max_step());
+  return dt;
+}
+
 std::vector<std::string> RhsEvaluator::term_names() const {
   std::vector<std::string> names;
   for (const auto& t : terms_) names.push_back(t->name());

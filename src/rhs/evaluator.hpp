@@ -67,6 +67,8 @@ class RhsEvaluator {
   std::vector<std::string> term_names() const;
   double ghost_depth() const { return ghosts_.depth(); }
   double max_acceleration() const { return max_accel_; }  // from the last eval, real particles
+  // The smallest Term::max_step of the terms (+infinity when none has a limit of its own).
+  double max_step() const;
   long evaluations() const { return evals_; }
   long neighbor_rebuilds() const { return neighbors_.rebuilds(); }
   // Forces a fresh ghost set and candidate list at the next eval, as after a restart from a

@@ -2,6 +2,7 @@
 // and its source, and is constructed only when the scene needs it (rhs/terms_from_scene.cpp).
 #pragma once
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -22,6 +23,10 @@ class Term {
   virtual void apply(FluidFields& f) const = 0;
   // Whether the term adds a regularisation velocity to f.shift_u, f.shift_v (dr/dt = u + du_s).
   virtual bool moves_particles() const { return false; }
+  // The largest step an explicit Runge-Kutta method may take for this term's own dynamics to stay
+  // stable, where the term has a stiffness of its own that the CFL, viscous and force limits do not
+  // cover (run/setup.hpp, stable_step); +infinity for the others.
+  virtual double max_step() const { return std::numeric_limits<double>::infinity(); }
   // Whether apply() walks f.pairs (an equation of state or a body force does not).
   virtual bool uses_neighbors() const { return true; }
   // Terms that only read neighbours and add to real particle a's derivatives (rhs/particle_term.hpp)

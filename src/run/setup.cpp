@@ -129,6 +129,7 @@ double stable_step(const Scene& scene, const Model& model, double max_speed, dou
   if (signal > 0) dt = std::min(dt, scene.cfl * h / signal);
   if (scene.viscosity > 0 && !scene.imex) dt = std::min(dt, 0.125 * h * h / scene.viscosity);  // eq. 36 (explicit only)
   if (max_accel > 0) dt = std::min(dt, 0.25 * std::sqrt(h / max_accel));        // eq. 37
+  if (model.rhs) dt = std::min(dt, model.rhs->max_step());  // the terms' own limits (Term::max_step)
   if (!std::isfinite(dt)) dt = scene.end;
   return dt;
 }

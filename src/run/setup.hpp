@@ -28,7 +28,8 @@ Model build_model(const Scene& scene);
 // Largest stable step (Szewc et al. 2012 eqs. 34-37) at the current fields:
 //   CFL  dt <= cfl h / (c + |u|max)  (wcsph, eq. 35) or cfl h / |u|max (eq. 34),
 //   viscous dt <= 0.125 h^2 / nu (eq. 36; not with time.imex, where viscosity is implicit),
-//   force dt <= 0.25 sqrt(h / |a|max) (eq. 37).
+//   force dt <= 0.25 sqrt(h / |a|max) (eq. 37),
+// and the limits of terms stiff in their own right (Term::max_step: particle shifting).
 double stable_step(const Scene& scene, const Model& model, double max_speed, double max_accel);
 // Largest particle speed |u| of the state y (the particles in layout L).
 double max_speed(const StateLayout& L, const double* y);

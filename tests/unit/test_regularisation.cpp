@@ -119,6 +119,56 @@ TEST_CASE("shifting: zero on the lattice, -A h U grad C on a compressed one") {
   CHECK(worst_v <= 1e-12 * amplitude);
 }
 
+// The step limit of shifting (rhs/shifting_stability.hpp) rests on the fastest decay rate of the
+// linearised shifting velocity over the lattice's Fourier modes. Brute force on the real term: power
+// iteration on the map from a displacement field d to the shift velocity of the displaced lattice,
+// (du(r0 + eps d) - du(r0 - eps d)) / (2 eps), whose largest eigenvalue in magnitude is that rate (the
+// map is symmetric negative semi-definite about the lattice, where du = 0). The Rayleigh quotient
+// after 150 iterations must be within 1 % of the rate behind Term::max_step (1.5 / rate). The fastest
+// mode runs along an axis at k = 1.335 / dx (Wendland, h = 2 dx, R = 0.2); the 14 x 14 periodic
+// lattice carries k = 2 pi 3 / (14 dx) = 1.346 / dx, whose rate is 0.1 % below it, and its few
+// modes let the iteration converge (0.2 % measured). A rate off by a factor (a missed V0 or h, or the
+// anti-clumping factor's derivative, 13 % of the rate) is outside. No saturation (limit 0), so the
+// map is linear; eps = 1e-7 dx keeps the finite difference at round-off level.
+TEST_CASE("shifting: the step limit's rate is the fastest decay of the shifting velocity") {
+  const Scene scene = box({"method.regularisation=\"shifting\"", "method.shifting_limit=0", "fluid.spacing=0.07",
+                           "domain.max=[0.98, 0.98]"});
+  Evaluated e(scene);
+  const StateLayout& L = e.model.rhs->layout();
+  const double rate_of_limit = 1.5 / e.model.rhs->max_step();
+  REQUIRE(std::isfinite(rate_of_limit));
+  const std::vector<double> y0 = e.y;
+  const double eps = 1e-7 * scene.spacing;
+  auto shift_of = [&](const std::vector<double>& d, double sign) {
+    for (std::size_t i = 0; i < 2 * L.n; ++i) e.y[i] = y0[i] + sign * eps * d[i];
+    const FluidFields& f = e.eval();
+    std::vector<double> s(2 * L.n);
+    for (std::size_t a = 0; a < L.n; ++a) {
+      s[a] = f.shift_u[a];
+      s[L.n + a] = f.shift_v[a];
+    }
+    return s;
+  };
+  std::vector<double> d(2 * L.n);
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = std::sin(12.9898 * i + 0.3) + 0.5 * std::cos(78.233 * i);
+  double rayleigh = 0;
+  for (int it = 0; it < 150; ++it) {
+    double norm = 0;
+    for (double x : d) norm += x * x;
+    for (double& x : d) x /= std::sqrt(norm);
+    const std::vector<double> plus = shift_of(d, 1), minus = shift_of(d, -1);
+    std::vector<double> jd(d.size());
+    rayleigh = 0;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      jd[i] = (plus[i] - minus[i]) / (2 * eps);
+      rayleigh -= d[i] * jd[i];
+    }
+    d = jd;
+  }
+  MESSAGE("fastest decay rate: power iteration ", rayleigh, ", behind the step limit ", rate_of_limit);
+  CHECK(std::abs(rayleigh / rate_of_limit - 1) <= 0.01);
+}
+
 // The shifting part carries the velocity along the shifted path: du/dt gains (du . grad) u. With
 // u = (sin 2 pi y, 0.5 cos 2 pi x) and du along x only (the compressed lattice above), the gain of
 // dv/dt is du_x dv/dx = -pi du_x sin(2 pi x). Tolerance 10 % of the largest gain: the SPH gradient's

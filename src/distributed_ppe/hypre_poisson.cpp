@@ -60,7 +60,7 @@ struct IjSystem {
   }
 };
 
-HYPRE_IJVector make_vector(MPI_Comm comm, HYPRE_BigInt lo, HYPRE_BigInt hi, const std::vector<HYPRE_BigInt>& idx,
+void make_vector(MPI_Comm comm, HYPRE_BigInt lo, HYPRE_BigInt hi, const std::vector<HYPRE_BigInt>& idx,
                            const double* values, HYPRE_IJVector& v) {
   check(HYPRE_IJVectorCreate(comm, lo, hi, &v), "IJVectorCreate");
   check(HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR), "IJVectorSetObjectType");
@@ -68,7 +68,6 @@ HYPRE_IJVector make_vector(MPI_Comm comm, HYPRE_BigInt lo, HYPRE_BigInt hi, cons
   if (!idx.empty())
     check(HYPRE_IJVectorSetValues(v, static_cast<HYPRE_Int>(idx.size()), idx.data(), values), "IJVectorSetValues");
   check(HYPRE_IJVectorAssemble(v), "IJVectorAssemble");
-  return v;
 }
 
 }  // namespace

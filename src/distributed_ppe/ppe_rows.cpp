@@ -28,10 +28,16 @@ GlobalRow row_of_id(const parallel::Communicator& comm, const std::vector<std::i
 void assemble_rows(const parallel::Communicator& comm, const FluidFields& f, std::size_t n_owned,
                    const std::vector<GlobalRow>& row_of, const RowRange& range, GlobalRow pinned_row,
                    const std::vector<double>& divergence, double dt, LocalRows& out) {
-  if (n_owned > f.n_real || row_of.size() < f.n_real || divergence.size() < n_owned)
-    throw std::invalid_argument("distributed PPE: " + std::to_string(n_owned) + " owned particles, " +
+  // Checked on every rank together, so that a mismatch on one rank stops all (no rank left waiting).
+  const bool sizes_match = n_owned <= f.n_real && row_of.size() >= f.n_real && divergence.size() >= n_owned;
+  if (comm.sum(static_cast<std::int64_t>(sizes_match ? 0 : 1)) > 0)
+    throw std::invalid_argument(!sizes_match ? "distributed PPE: " + std::to_string(n_owned) + " owned particles, " +
                                 std::to_string(f.n_real) + " real points, " + std::to_string(row_of.size()) +
-                                " rows and " + std::to_string(divergence.size()) + " divergences do not match");
+                                " rows and " + std::to_string(divergence.size()) + " divergences do not match"
+                                                  : std::string("distributed PPE: sizes do not match on another rank"));
+  if (pinned_row < 0 || pinned_row >= range.total)
+    throw std::invalid_argument("distributed PPE: pinned row " + std::to_string(pinned_row) + " is not one of the " +
+                                std::to_string(range.total) + " rows (no rank owns the pinned particle)");
   out.range = range;
   // Source: zero mean over all ranks' particles, scaled like the rows (assemble_ppe).
   double local = 0;

@@ -52,7 +52,8 @@ struct LocalRows {
 // Collective (the mean of the source). row_of: the global row of every real point of f (owned
 // then halo copies); divergence: div(u*) of the owned particles (at least n_owned values; C&R eq. 17
 // or the difference form, plus any Neumann source, as the one-process projection passes to
-// assemble_ppe). The storage of `out` is reused.
+// assemble_ppe). The storage of `out` is reused. Throws std::invalid_argument when the sizes do not
+// match or pinned_row is not a row (the Neumann problem would be left singular).
 void assemble_rows(const parallel::Communicator& comm, const FluidFields& f, std::size_t n_owned,
                    const std::vector<GlobalRow>& row_of, const RowRange& range, GlobalRow pinned_row,
                    const std::vector<double>& divergence, double dt, LocalRows& out);

@@ -2,6 +2,7 @@
 // (assemble_ppe), row by row by particle, on 1, 2 and 3 ranks: a walled and a periodic 30 x 30 box.
 #include <doctest/doctest.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "ppe_compare.hpp"
@@ -53,4 +54,20 @@ TEST_CASE("distributed ppe rows: a halo cut in half gives other rows") {
               c.pattern_mismatches, " of ", c.rows, " rows with other columns");
     CHECK(c.pattern_mismatches > 0);
   }
+}
+
+// Bad input stops every rank with an exception, also when only one rank's sizes are wrong.
+TEST_CASE("distributed ppe rows: a pinned row outside the rows or a size mismatch on one rank throws on all") {
+  const Communicator comm;
+  const OneProcessPpe one(ppe_scene(true));
+  const RankPpe mine(comm, one);
+  const FluidFields& f = mine.rhs->fields();
+  const std::vector<double> div = divergence_cummins_rudman(f);
+  distributed_ppe::LocalRows rows;
+  CHECK_THROWS_AS(distributed_ppe::assemble_rows(comm, f, mine.owned.size(), mine.row_of, mine.range, -1, div, kPpeDt, rows),
+                  std::invalid_argument);
+  std::vector<distributed_ppe::GlobalRow> short_rows = mine.row_of;
+  if (comm.rank() == comm.size() - 1) short_rows.pop_back();
+  CHECK_THROWS_AS(distributed_ppe::assemble_rows(comm, f, mine.owned.size(), short_rows, mine.range, mine.pinned, div, kPpeDt, rows),
+                  std::invalid_argument);
 }

@@ -6,11 +6,12 @@
 // sum of the particle counts of the ranks below r (global_rows), in the rank's particle order. A
 // halo copy stands for its owner's particle and takes its row, sent along the halo like any field.
 //
-// Fields: f holds the rank's particles [0, n_owned), then its halo copies [n_owned, n_real) (within
-// at least one kernel support plus skin of the rank's particles, periodic images of its own
-// particles among them), then the wall ghosts of both (the evaluator's ghosts without periodic
-// images: the halo is the periodic side). Each owned particle then finds all its neighbours, and a
-// ghost's or copy's coefficient lands in the column of the particle it stands for, as in one process.
+// Fields: f holds the rank's particles [0, n_owned), then its halo copies [n_owned, n_real) (the
+// halo of a decomposed run, two kernel supports plus skin, periodic images of the rank's own
+// particles among them: the copies within one support then have their one-process densities), then
+// the wall ghosts of both (the evaluator's ghosts without periodic images: the halo is the periodic
+// side). Each owned particle then finds all its neighbours, and a ghost's or copy's coefficient
+// lands in the column of the particle it stands for, as in one process.
 //
 // Pressure level (the null space of the Neumann problem) as in one process: the source is shifted to
 // zero mean over all particles (global sum), and the equation of one particle, `pinned_row`, is

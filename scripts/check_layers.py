@@ -11,7 +11,7 @@ import sys
 
 # Bottom to top.
 LAYERS = ["core", "kernels", "neighbors", "boundary", "parallel", "rhs", "integrate", "projection",
-          "diagnostics", "io", "run", "distributed", "study", "app"]
+          "distributed_ppe", "diagnostics", "io", "run", "distributed", "study", "app"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 
 

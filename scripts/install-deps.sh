@@ -5,7 +5,7 @@ set -eu
 PKGS="build-essential cmake pkg-config
 libsundials-dev libeigen3-dev libsuitesparse-dev libvtk9-dev libhdf5-dev
 doctest-dev libtomlplusplus-dev libmuparser-dev libbenchmark-dev
-libopenmpi-dev openmpi-bin
+libopenmpi-dev openmpi-bin libhypre-dev
 python3 python3-numpy python3-h5py python3-matplotlib"
 missing=""
 for p in $PKGS; do

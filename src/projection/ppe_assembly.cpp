@@ -3,6 +3,7 @@
 #include <numeric>
 
 #include "kernels/kernel.hpp"
+#include "projection/ppe_row.hpp"
 
 namespace arksph {
 
@@ -24,18 +25,10 @@ std::vector<double> divergence_cummins_rudman(const FluidFields& f) {
   return div;
 }
 
-namespace {
-// Coefficient c_ab of (P_a - P_b) in L(P)_a, C&R eq. 19: r . grad W = F r^2.
-inline double laplacian_coeff(const FluidFields& f, std::size_t a, std::uint32_t b, double r2, double F,
-                              double eta2) {
-  return f.m[b] / f.rho[b] * 4.0 / (f.rho[a] + f.rho[b]) * F * r2 / (r2 + eta2);
-}
-}  // namespace
-
 std::vector<double> neumann_source(const FluidFields& f) {
   std::vector<double> out(f.n_real, 0.0);
   if (f.ghost_dp.empty()) return out;
-  const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+  const double eta2 = ppe_eta2(f);
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < f.n_real; ++a) {
     double s = 0;
@@ -68,7 +61,7 @@ std::vector<double> neumann_source_exact(const FluidFields& f) {
 }
 
 std::vector<double> apply_laplacian(const FluidFields& f, const std::vector<double>& p) {
-  const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+  const double eta2 = ppe_eta2(f);
   std::vector<double> out(f.n_real, 0.0);
   for (std::size_t a = 0; a < f.n_real; ++a) {
     double s = 0;
@@ -88,7 +81,7 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
 
 void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, PoissonSystem& sys) {
   const std::size_t n = f.n_real;
-  const double eta2 = 0.01 * f.kernel->h() * f.kernel->h();
+  const double eta2 = ppe_eta2(f);
   // Source: zero mean, scaled like the rows.
   const double mean = std::accumulate(divergence.begin(), divergence.end(), 0.0) / static_cast<double>(n);
   sys.b.resize(n);
@@ -113,40 +106,15 @@ void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, d
     int* col = inner + start[a];
     double* val = value + start[a];
     int len = 0;
-    const double va = f.m[a] / f.rho[a];
-    double diag = 0;
-    f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double r2, double, double F) {
-      const std::uint32_t s = f.src[b];
-      if (s == a) return;  // a's own mirror image: P_a - P_a = 0
-      const double c = -va * laplacian_coeff(f, a, b, r2, F, eta2);  // > 0
-      diag += c;
-      if (a != 0 && s != 0) {
+    const double diag = ppe_row(f, a, eta2, [](std::uint32_t s) { return s; }, [&](std::uint32_t s, double v) {
+      if (a != 0 && s != 0) {  // P_0 = 0: row and column 0 dropped
         col[len] = static_cast<int>(s);
-        val[len++] = -c;
+        val[len++] = v;
       }
     });
     col[len] = static_cast<int>(a);
     val[len++] = a == 0 ? 1.0 : diag;
-    for (int k = 1; k < len; ++k) {  // stable insertion sort: duplicates keep their pair order
-      const int ck = col[k];
-      const double vk = val[k];
-      int i = k;
-      for (; i > 0 && col[i - 1] > ck; --i) {
-        col[i] = col[i - 1];
-        val[i] = val[i - 1];
-      }
-      col[i] = ck;
-      val[i] = vk;
-    }
-    int m = 0;  // merge equal columns, summing in the sorted order
-    for (int k = 0; k < len; ++k) {
-      if (m > 0 && col[m - 1] == col[k]) {
-        val[m - 1] += val[k];
-      } else {
-        col[m] = col[k];
-        val[m++] = val[k];
-      }
-    }
+    const int m = sort_merge_row(col, val, len);
     used[a] = m;
   }
   A.makeCompressed();

@@ -1,0 +1,73 @@
+// The distributed PPE solve (distributed_ppe/hypre_poisson.hpp: hypre PCG + BoomerAMG) on 1, 2 and 3
+// ranks against the one-process KLU solution of the same system, walled and periodic 30 x 30 box.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+#include "distributed_ppe/hypre_poisson.hpp"
+#include "ppe_compare.hpp"
+#include "projection/poisson_solver.hpp"
+
+using namespace arksph;
+using namespace arksph::parallel;
+using namespace arksph::parallel::testing;
+
+namespace {
+// The solvers' stopping test |b - A p| <= tol |b| (method.ppe_tolerance), at its default 1e-10: the
+// solution is then within cond(A) tol of KLU's, far above the round-off of the rows (1e-15).
+constexpr double kSolveTolerance = 1e-10;
+}  // namespace
+
+TEST_CASE("hypre poisson: the distributed solution equals one process's KLU within the tolerance") {
+  const Communicator comm;
+  for (const bool periodic : {false, true}) {
+    const OneProcessPpe one(ppe_scene(periodic));
+    const RankPpe mine(comm, one);
+    std::vector<double> exact(one.particles.n, 0.0);
+    make_poisson_solver("klu", kSolveTolerance)->solve(one.sys.A, one.sys.b, exact);
+
+    distributed_ppe::HyprePoisson hypre(comm, kSolveTolerance);
+    std::vector<double> p;
+    const distributed_ppe::HypreSolveReport rep = hypre.solve(mine.rows, p);
+    const std::vector<double> all = by_index(comm, one, mine, p);
+
+    // The gathered solution in the one-process system: its residual, and its distance to KLU's.
+    const Eigen::Map<const Eigen::VectorXd> x(all.data(), static_cast<long>(all.size()));
+    const Eigen::Map<const Eigen::VectorXd> b(one.sys.b.data(), static_cast<long>(all.size()));
+    const Eigen::Map<const Eigen::VectorXd> e(exact.data(), static_cast<long>(all.size()));
+    const double residual = (b - SparseMatrix(one.sys.A.transpose()) * x).norm() / b.norm();
+    const double error = (x - e).norm() / e.norm();
+    // The bound of any solution with that residual: |p - p*| / |p*| <= cond(A) |r| / |b| (2-norms),
+    // cond(A) from the eigenvalues of the (symmetric) one-process matrix.
+    const Eigen::MatrixXd dense(one.sys.A);
+    const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense, Eigen::EigenvaluesOnly).eigenvalues();
+    const double cond = lambda.maxCoeff() / lambda.minCoeff();
+    if (comm.rank() == 0)
+      MESSAGE(std::string(periodic ? "periodic" : "walls"), ", ", comm.size(), " ranks: ", rep.iterations,
+              " iterations, residual ", rep.relative_residual, " (one-process matrix: ", residual, "), error ", error,
+              " of |p|, cond(A) ", cond);
+    CHECK(rep.iterations > 0);
+    CHECK(rep.relative_residual <= kSolveTolerance);
+    // The rows agree to ~1e-15 (test_ppe_rows.cpp), so the residual in the one-process matrix is
+    // hypre's up to that round-off times |A| |p| / |b|: 2 x tol leaves it room.
+    CHECK(residual <= 2 * kSolveTolerance);
+    CHECK(lambda.minCoeff() > 0);
+    CHECK(error <= cond * residual);
+    CHECK(all[0] == 0.0);  // the pinned particle (one-process index 0)
+  }
+}
+
+TEST_CASE("hypre poisson: a zero source gives zero with no iteration") {
+  const Communicator comm;
+  const OneProcessPpe one(ppe_scene(true));
+  RankPpe mine(comm, one);
+  std::fill(mine.rows.b.begin(), mine.rows.b.end(), 0.0);
+  distributed_ppe::HyprePoisson hypre(comm, kSolveTolerance);
+  std::vector<double> p(mine.rows.size(), 1.0);
+  const auto rep = hypre.solve(mine.rows, p);
+  CHECK(rep.iterations == 0);
+  CHECK(std::all_of(p.begin(), p.end(), [](double v) { return v == 0.0; }));
+}

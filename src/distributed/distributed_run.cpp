@@ -222,6 +222,9 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   Progress progress(scene.end, options.quiet || !root);
   long reflections = restarting ? checkpoints->restart().wall_reflections : 0;
   long migrations = 0;
+  // The fewest particles a rank owned after a deal or a migration (summary.json mpi.fewest_particles).
+  std::int64_t fewest = -comm.max(-static_cast<std::int64_t>(mine.size()));
+  const auto count_fewest = [&] { fewest = std::min(fewest, -comm.max(-static_cast<std::int64_t>(mine.size()))); };
   double migration_seconds = 0;
   double t = checkpoints->start_time();
   int frame = checkpoints->first_frame();
@@ -249,6 +252,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     mine.refresh_ids();
     f.set_decomposition(*decomposition);
     integrator->resize(mine.state(), at, h);
+    count_fewest();
     ++migrations;
     migration_seconds += std::chrono::duration<double>(clock::now() - t0).count();
   };
@@ -273,6 +277,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     mine = RankParticles(model.particles, layout, all.data(), *decomposition, comm.rank());
     f.set_decomposition(*decomposition);
     start_integrator(at, h, counters);
+    count_fewest();
   };
   try {
     while (t < scene.end) {
@@ -362,6 +367,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   if (root) {
     Json mpi = Json::object();
     mpi.set("ranks", ranks).set("halo_exchanges", f.exchanges()).set("migrations", migrations);
+    mpi.set("fewest_particles", static_cast<long>(fewest));
     out->set_mpi(mpi);
     if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
     try {

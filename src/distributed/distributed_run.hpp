@@ -14,7 +14,9 @@
 //               reflections are counted over the ranks and re-initialise every rank
 //   agreement   after every step the ranks agree on failures and signals (rank_verdict.hpp)
 //   output      rank 0 gathers the state (gather_state.hpp) and writes what a one-process run
-//               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations"}
+//               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations",
+//               "fewest_particles"}; a rank may own no particles (it still takes part in every
+//               collective call)
 //   checkpoints rank 0 writes checkpoint.h5 as one process does (output.checkpoint_every, at the end,
 //               on a signal), the whole state in the model's particle order; a restart
 //               (--restart, on any number of ranks) deals the particles from the checkpoint's

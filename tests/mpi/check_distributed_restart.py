@@ -30,6 +30,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_checks import TIMEOUT, check, finish, launch  # noqa: E402
 from vtp_arrays import read_arrays  # noqa: E402
 
 arksph, source, work, mpiexec = sys.argv[1:5]
@@ -38,29 +39,13 @@ flags = sys.argv[5:]
 # results differ by round-off, ~1e-14 of the largest speed at t = 0.05 (docs/parallel.md, the
 # same bound as check_distributed_run.py).
 ROUND_OFF = 1e-12
-TIMEOUT = 300  # seconds: a rank left waiting in a collective call fails the test instead of hanging
-failures = []
-
-
-def check(ok, what):
-    print(("ok:     " if ok else "FAILED: ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def run(ranks, args, out):
-    cmd = [arksph, "run"] + args + ["--out", out, "--quiet"]
-    if ranks > 1:
-        cmd = [mpiexec, "-n", str(ranks)] + flags + cmd
-    try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=TIMEOUT)
-    except subprocess.TimeoutExpired:
-        check(False, " ".join(cmd) + " ended within %d s" % TIMEOUT)
-        return None, ""
-    print(" ".join(cmd), "->", p.returncode)
-    if p.returncode not in (0, 2):
-        print(p.stderr)
-    return p.returncode, p.stderr
+    code, err = launch(arksph, mpiexec, flags, ranks, args, out)
+    if code not in (0, 2, None):
+        print(err)
+    return code, err
 
 
 def fresh(name, ranks, args):
@@ -209,5 +194,4 @@ if stopped:
     code, _ = run(3, ["--restart", os.path.join(stopped, "checkpoint.h5"), "--set", "time.end=0.1"], stopped)
     check(code == 0, "the interrupted 2-rank run continues on 3 ranks: exit %s" % code)
 
-print("check_distributed_restart: %d failure(s)" % len(failures))
-sys.exit(1 if failures else 0)
+finish("check_distributed_restart")

@@ -22,10 +22,10 @@ import glob
 import json
 import os
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_checks import check, finish, launch  # noqa: E402
 from vtp_arrays import read_arrays  # noqa: E402
 
 arksph, source, work, mpiexec = sys.argv[1:5]
@@ -35,29 +35,13 @@ flags = sys.argv[5:]
 # particles in another order differs by 3e-15 at t = 0.05, 1.5e-12 at t = 0.1, 1.5e-10 at t = 0.15
 # for the vortex). The runs end at t = 0.05 (28 steps), where round-off is still ~1e-14.
 ROUND_OFF = 1e-12
-TIMEOUT = 300  # seconds: a rank left waiting in a collective call fails the test instead of hanging
-failures = []
-
-
-def check(ok, what):
-    print(("ok:     " if ok else "FAILED: ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def run(name, ranks, args):
     out = os.path.join(work, name)
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [arksph, "run"] + args + ["--out", out, "--quiet"]
-    if ranks > 1:
-        cmd = [mpiexec, "-n", str(ranks)] + flags + cmd
-    try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=TIMEOUT)
-    except subprocess.TimeoutExpired:
-        check(False, " ".join(cmd) + " ended within %d s" % TIMEOUT)
-        return out, None, ""
-    print(" ".join(cmd), "->", p.returncode)
-    return out, p.returncode, p.stderr
+    code, err = launch(arksph, mpiexec, flags, ranks, args, out)
+    return out, code, err
 
 
 def message(err):
@@ -143,5 +127,4 @@ for ranks in (1, 3):
     check(code == 3 and "exceeds the blow-up bound" in err,
           "a blow-up on the particles of one rank of %d: exit %s, %s" % (ranks, code, message(err)))
 
-print("check_distributed_run: %d failure(s)" % len(failures))
-sys.exit(1 if failures else 0)
+finish("check_distributed_run")

@@ -15,11 +15,13 @@
 #include "distributed/halo_rhs.hpp"
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
+#include "distributed/rank_piece.hpp"
 #include "distributed/rank_verdict.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "parallel/migration.hpp"
 #include "parallel/rcb.hpp"
 #include "io/checkpoint.hpp"
+#include "io/pvtp_writer.hpp"
 #include "run/checkpointing.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_folder.hpp"
@@ -136,7 +138,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s, integrator %s\n",
                 scene.scheme.c_str(), model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str(),
                 scene.integrator.c_str());
-    std::printf("  output: %s (gathered on rank 0)\n", scene.directory.c_str());
+    std::printf("  output: %s (%s)\n", scene.directory.c_str(),
+                scene.pieces ? "a frame piece per rank, the rest gathered on rank 0" : "gathered on rank 0");
     std::fflush(stdout);
   }
   std::vector<double> y0(layout.size());
@@ -213,11 +216,25 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     mine.load(integrator->state());
     return everywhere ? gather.allgather(comm, mine) : gather.gather(comm, mine);
   };
-  if (!restarting)
+  // A frame: rank 0 writes the frame of the whole state and the diagnostics; with output.pieces
+  // every rank writes its piece first (its fields refreshed at the state, as rank 0's are) and rank
+  // 0 the index naming them.
+  const bool pieces = scene.pieces && options.write_frames;
+  if (root && pieces) out->set_pieces(ranks);
+  const auto write_frame = [&](double at, const ErkStats& st) {
+    if (pieces) {
+      f.eval(at, integrator->state(), nullptr);
+      const int number = static_cast<int>(comm.max(static_cast<std::int64_t>(root ? out->frames() : 0)));
+      together(comm, [&] {
+        write_rank_piece(scene.directory + "/" + piece_file_name(number, comm.rank()), at, f, mine, grid.domain());
+      });
+    }
     together(comm, [&] {
       const std::vector<double> all = whole_state(false);
-      if (root) out->write(0.0, all.data(), d0, integrator->stats());
+      if (root) out->write(at, all.data(), d0, st);
     });
+  };
+  if (!restarting) write_frame(0.0, integrator->stats());
 
   Progress progress(scene.end, options.quiet || !root);
   long reflections = restarting ? checkpoints->restart().wall_reflections : 0;
@@ -323,10 +340,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       if (result.exit_code) break;
       ErkStats st = integrator->stats();
       st.last_step = dt_max;
-      together(comm, [&] {
-        const std::vector<double> all = whole_state(false);
-        if (root) out->write(t, all.data(), d0, st);
-      });
+      write_frame(t, st);
       progress.frame(t, st.steps, dt_max);
       ++frame;
       const bool steady = comm.max(static_cast<std::int64_t>(root && out->steady())) > 0;

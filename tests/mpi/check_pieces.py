@@ -8,6 +8,7 @@ particles_NNNNNN.pvtp, listed in particles.pvd. Read back with VTK (vtkXMLPPolyD
     pressure, mass and phase bit for bit (the same state: writing pieces changes nothing in the
     run, and timeseries.csv is identical); summation_density and the positions within ROUND_OFF
     (each rank sums its particles' neighbours over its halo, rank 0 over the whole model);
+  - with ranks that own no particles (empty pieces) the index still reads as every particle once;
   - one process ignores the key: particles.pvd lists whole .vtp frames.
 
 Exit 77 (skipped) when this Python has no VTK module (Debian: python3-vtk9).
@@ -94,6 +95,16 @@ if whole and pieces:
                 worst[n] = max(worst[n], max(abs(x - y) for x, y in zip(a, b)) / scale)
     for n, w in worst.items():
         check(w <= ROUND_OFF, "%s of the pieces against the whole frames: max relative difference %.3g" % (n, w))
+
+# Empty pieces: 10 x 10 particles squeezed into x < 0.4 on 4 ranks of one cell each (two ranks own
+# no particles, as in check_distributed_restart.py): the index still reads as every particle once.
+squeezed = fresh("pieces-empty-4", 4, [vortex, "--set", "fluid.spacing=0.1", "--set", 'initial.offset=["-0.6*x", "0"]',
+                                       "--set", "time.end=0.02", "--set", "output.pieces=true"])
+if squeezed:
+    for pvtp in listed(squeezed):
+        _, ids = read(os.path.join(squeezed, pvtp), vtk.vtkXMLPPolyDataReader())
+        check(sorted(ids) == list(range(100)), "%s with empty pieces: every particle once (%d points)"
+              % (pvtp, len(ids)))
 
 one = fresh("pieces-1", 1, scene + ["--set", "output.pieces=true"])
 if one:

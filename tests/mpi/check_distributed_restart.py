@@ -208,6 +208,13 @@ check(code == 2 and len(lines) == 1 and "cannot be split" in lines[0],
       "tiny scene on 5 ranks (4 cells): exit %s, one message %s" % (code, lines))
 
 
+def is_arksph(pid):
+    try:
+        return os.path.realpath("/proc/%s/exe" % pid) == os.path.realpath(arksph)
+    except OSError:
+        return False
+
+
 def interrupted(name):
     """A 2-rank run stopped by SIGTERM to one rank once its second frame is written."""
     out = os.path.join(work, name)
@@ -218,7 +225,8 @@ def interrupted(name):
     deadline = time.time() + TIMEOUT
     while not os.path.exists(os.path.join(out, "particles_000002.vtp")) and p.poll() is None and time.time() < deadline:
         time.sleep(0.1)
-    ranks = subprocess.run(["pgrep", "-P", str(p.pid)], capture_output=True, text=True).stdout.split()
+    ranks = [pid for pid in subprocess.run(["pgrep", "-f", out], capture_output=True, text=True).stdout.split()
+             if is_arksph(pid)]  # the rank processes (not the launcher or its proxies)
     if ranks:
         os.kill(int(ranks[-1]), signal.SIGTERM)
     try:

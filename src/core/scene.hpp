@@ -112,6 +112,7 @@ struct Scene {
   std::string directory = "runs/unnamed";
   double every = 0.0;  // 0: only first and last frame
   double checkpoint_every = 0.0;  // simulated time between checkpoint.h5 writes; 0: only at the end
+  bool pieces = false;            // several MPI ranks: one VTP piece per rank and a PVTP per frame
 
   // [metrics]
   int ghia_re = 0;          // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors

@@ -15,13 +15,19 @@
 #include "distributed/halo_rhs.hpp"
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
+#include "distributed/rank_piece.hpp"
 #include "distributed/rank_verdict.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "parallel/migration.hpp"
 #include "parallel/rcb.hpp"
+#include "io/checkpoint.hpp"
+#include "io/pvtp_writer.hpp"
 #include "run/checkpointing.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_folder.hpp"
+#include "run/output_resume.hpp"
+#include "run/output_start.hpp"
+#include "run/particle_reorder.hpp"
 #include "run/progress.hpp"
 #include "run/run_output.hpp"
 #include "run/setup.hpp"
@@ -78,16 +84,30 @@ parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector
   }
 }
 
+// The bisection of a whole state y (the model's layout): every position wrapped into the box and
+// counted per cell (the same counts on every rank, which all hold y).
+parallel::Decomposition bisect_state(const parallel::CellGrid& grid, const StateLayout& layout, const double* y,
+                                     int ranks, const Scene& scene) {
+  const int dim = layout.dim;
+  parallel::ParticleFields positions(dim, dim);
+  positions.resize(layout.n);
+  for (std::size_t a = 0; a < layout.n; ++a) {
+    double x[3] = {0, 0, 0};
+    for (int k = 0; k < dim; ++k) x[k] = y[layout.pos(k) + a];
+    grid.domain().wrap(x);
+    for (int k = 0; k < dim; ++k) positions.field[static_cast<std::size_t>(k)][a] = x[k];
+  }
+  return bisect(grid, parallel::count_per_cell(grid, positions), ranks, scene);
+}
+
 }  // namespace
 
-void check_distributable(const Scene& scene, const RunOptions& options, int ranks) {
+void check_distributable(const Scene& scene, int ranks) {
   const std::string on =
       " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
-  if (options.restart) throw InputError("--restart" + on);
   if (!scheme_traits(scene.scheme).weakly_compressible)
     throw InputError(scene.source + ": scheme " + scene.scheme + on);
   if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
-  if (scene.checkpoint_every > 0) throw InputError(scene.source + ": output.checkpoint_every" + on);
   if (scene.dimension != 2)
     throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
 }
@@ -97,7 +117,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   const auto wall_start = clock::now();
   const int ranks = comm.size();
   const bool root = comm.rank() == 0;
-  check_distributable(scene, options, ranks);
+  check_distributable(scene, ranks);
 
   // Set-up: the whole model on every rank; the output folder on rank 0.
   std::optional<Model> built;
@@ -109,8 +129,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     if (!root) return;
     folder = std::make_unique<OutputFolder>(scene.directory, scene.source);
     if (!options.overwrite) folder->refuse_foreign_files();
-    folder->remove_run_outputs();
-    run_id = new_run_id();
+    run_id = start_output_folder(*folder, scene, options);
   });
   RhsEvaluator& rhs = *model.rhs;
   const StateLayout& layout = rhs.layout();
@@ -119,36 +138,43 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     std::printf("  scheme %s, %zu particles, dimension %d, dx %.6g, h %.6g, kernel %s, integrator %s\n",
                 scene.scheme.c_str(), model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str(),
                 scene.integrator.c_str());
-    std::printf("  output: %s (gathered on rank 0)\n", scene.directory.c_str());
+    std::printf("  output: %s (%s)\n", scene.directory.c_str(),
+                scene.pieces ? "a frame piece per rank, the rest gathered on rank 0" : "gathered on rank 0");
     std::fflush(stdout);
   }
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
   rhs.eval(0.0, y0.data(), nullptr);  // the fields at t = 0: number density, the checker's speed bound
-  const std::vector<double> d0 = number_density(rhs.fields());
-
-  // The first decomposition, from the whole lattice (the same counts on every rank).
-  const parallel::CellGrid grid(domain_of(scene), rhs.kernel().radius());
-  parallel::ParticleFields positions(scene.dimension, scene.dimension);
-  positions.resize(layout.n);
-  for (std::size_t a = 0; a < layout.n; ++a) {
-    double x[3] = {0, 0, 0};
-    for (int k = 0; k < scene.dimension; ++k) x[k] = y0[layout.pos(k) + a];
-    grid.domain().wrap(x);
-    for (int k = 0; k < scene.dimension; ++k) positions.field[static_cast<std::size_t>(k)][a] = x[k];
+  std::vector<double> d0 = number_density(rhs.fields());
+  // Restart: the model's particles in the checkpoint's order (every rank read the checkpoint), checked
+  // against the scene; rank 0 reads the earlier output before RunOutput truncates it.
+  if (options.restart) permute(d0, adopt_particle_order(model, options.restart->id));
+  std::optional<Checkpointer> checkpoints;
+  together(comm, [&] { checkpoints.emplace(scene, model, options.restart, options.restart_path); });
+  checkpoints->set_run_id(run_id);
+  const bool restarting = checkpoints->restarting();
+  OutputHistory earlier;
+  together(comm, [&] {
+    if (root && restarting)
+      earlier = read_output_history(scene.directory, checkpoints->start_time(), checkpoints->restart().output_frame,
+                                    scene.every);
+  });
+  const StateChecker checker(scene, model);
+  if (restarting) {
+    y0 = checkpoints->restart().state;
+    rhs.invalidate_neighbors();  // rank 0's output refreshes the fields of the whole model in the new order
+    together(comm, [&] { checker.check(checkpoints->start_time(), y0.data()); });  // NaN, blow-up, escape in the file
   }
+
+  // The particles dealt to the ranks from the whole state (at t = 0, a restart and every checkpoint).
+  const parallel::CellGrid grid(domain_of(scene), rhs.kernel().radius());
   std::optional<parallel::Decomposition> decomposition;
-  together(comm, [&] { decomposition.emplace(bisect(grid, parallel::count_per_cell(grid, positions), ranks, scene)); });
+  together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, y0.data(), ranks, scene)); });
   RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
   HaloRhs f(scene, model, comm, mine);
   f.set_decomposition(*decomposition);
   const StateGather gather(model.particles.id, layout);
 
-  std::vector<double> y = mine.state();
-  {
-    std::vector<double> ydot(y.size());
-    f.eval(0.0, y.data(), ydot.data());  // the acceleration at t = 0 for the first step
-  }
   ErkOptions eo = integrator_options(scene);
   eo.state_vector = mpi_state_vector(comm.comm());
   eo.any_rank = [&comm](bool local) { return comm.max(static_cast<std::int64_t>(local)) > 0; };
@@ -158,35 +184,76 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
                        comm.max(f.local_max_acceleration()));
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };
-  eo.initial_dt = stable(y.data());
-  ErkIntegrator integrator([&f](double t, const double* yl, double* yd) { f.eval(t, yl, yd); }, y, 0.0, eo);
-  std::vector<double>().swap(y);
+  // A new integrator at (t, the rank's state) with first step h (0: the stability limit) and the
+  // counters of the run so far: at the start, on restart, and after each scheduled checkpoint, so
+  // that a restart from that checkpoint continues as the run that wrote it (see the header).
+  std::unique_ptr<ErkIntegrator> integrator;
+  const auto start_integrator = [&](double t, double h, const ErkStats& counters) {
+    std::vector<double> y = mine.state();
+    {
+      std::vector<double> ydot(y.size());
+      f.eval(t, y.data(), ydot.data());  // the halo, and the acceleration for the stability limit
+    }
+    eo.initial_dt = h > 0 ? h : stable(y.data());
+    integrator = std::make_unique<ErkIntegrator>([&f](double tt, const double* yl, double* yd) { f.eval(tt, yl, yd); },
+                                                 y, t, eo);
+    integrator->set_counter_offset(counters);
+  };
+  start_integrator(checkpoints->start_time(), restarting ? checkpoints->restart().next_step : 0.0,
+                   checkpoints->counters());
+  std::vector<double>().swap(y0);
 
   std::unique_ptr<RunOutput> out;
   together(comm, [&] {
-    if (root) out = std::make_unique<RunOutput>(scene, model, options, run_id);
+    if (!root) return;
+    out = std::make_unique<RunOutput>(scene, model, options, run_id);
+    if (restarting) out->resume(earlier);
   });
-  if (root && integrator.workaround_installed()) out->add_term("erkstep:fsal_bug_workaround");
+  if (root && integrator->workaround_installed()) out->add_term("erkstep:fsal_bug_workaround");
   const long diag_before = rhs.evaluations();
-  together(comm, [&] {
-    const std::vector<double> all = gather.gather(comm, mine);
-    if (root) out->write(0.0, all.data(), d0, integrator.stats());
-  });
+  // The whole state on rank 0 (on every rank with `everywhere`), from the integrator's state.
+  const auto whole_state = [&](bool everywhere) {
+    mine.load(integrator->state());
+    return everywhere ? gather.allgather(comm, mine) : gather.gather(comm, mine);
+  };
+  // A frame: rank 0 writes the frame of the whole state and the diagnostics; with output.pieces
+  // every rank writes its piece first (its fields refreshed at the state, as rank 0's are) and rank
+  // 0 the index naming them.
+  const bool pieces = scene.pieces && options.write_frames;
+  if (root && pieces) out->set_pieces(ranks);
+  const auto write_frame = [&](double at, const ErkStats& st) {
+    if (pieces) {
+      f.eval(at, integrator->state(), nullptr);
+      const int number = static_cast<int>(comm.max(static_cast<std::int64_t>(root ? out->frames() : 0)));
+      together(comm, [&] {
+        write_rank_piece(scene.directory + "/" + piece_file_name(number, comm.rank()), at, f, mine, grid.domain());
+      });
+    }
+    together(comm, [&] {
+      const std::vector<double> all = whole_state(false);
+      if (root) out->write(at, all.data(), d0, st);
+    });
+  };
+  if (!restarting) write_frame(0.0, integrator->stats());
 
-  const StateChecker checker(scene, model);
   Progress progress(scene.end, options.quiet || !root);
-  long reflections = 0, migrations = 0;
+  long reflections = restarting ? checkpoints->restart().wall_reflections : 0;
+  long migrations = 0;
+  // The fewest particles a rank owned after a deal or a migration (summary.json mpi.fewest_particles).
+  std::int64_t fewest = -comm.max(-static_cast<std::int64_t>(mine.size()));
+  const auto count_fewest = [&] { fewest = std::min(fewest, -comm.max(-static_cast<std::int64_t>(mine.size()))); };
   double migration_seconds = 0;
-  double t = 0;
-  int frame = 1;
+  double t = checkpoints->start_time();
+  int frame = checkpoints->first_frame();
   int tiny_steps = 0;
+  double last_checkpoint = -1;  // time of the last checkpoint written
   RunResult result;
   // At a sync point: the particles to the owners of their positions by a new bisection, the
   // integrator re-initialised on the new local states.
   const auto migrate = [&](double at) {
     const auto t0 = clock::now();
-    const double h = integrator.next_step();
-    mine.load(integrator.state());
+    const double h = integrator->next_step();
+    mine.load(integrator->state());
     parallel::ParticleFields& F = mine.fields();
     const RankFieldIndex& ix = mine.index();
     for (std::size_t a = 0; a < F.size(); ++a) {
@@ -201,9 +268,33 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     parallel::migrate(comm, *decomposition, F);
     mine.refresh_ids();
     f.set_decomposition(*decomposition);
-    integrator.resize(mine.state(), at, h);
+    integrator->resize(mine.state(), at, h);
+    count_fewest();
     ++migrations;
     migration_seconds += std::chrono::duration<double>(clock::now() - t0).count();
+  };
+  // The checkpoint of the whole state at t, written by rank 0. Returns the path.
+  const auto write_checkpoint_at = [&](double at, const std::vector<double>& all) {
+    together(comm, [&] {
+      if (root) checkpoints->write_state(at, all.data(), integrator->stats(), integrator->next_step(), frame, reflections);
+    });
+    last_checkpoint = at;
+    return checkpoints->path();
+  };
+  // A scheduled checkpoint, when due at t. The run then continues as a restart from it does: the
+  // particles dealt anew from the whole state as at a restart (the same bisection and order on any
+  // run), and a new integrator at t (no FSAL value or step-size history survives).
+  const auto checkpoint_if_due = [&](double at) {
+    if (!checkpoints->take_due(at)) return;
+    const double h = integrator->next_step();
+    const ErkStats counters = integrator->stats();
+    const std::vector<double> all = whole_state(true);
+    write_checkpoint_at(at, all);
+    decomposition.emplace(bisect_state(grid, layout, all.data(), ranks, scene));
+    mine = RankParticles(model.particles, layout, all.data(), *decomposition, comm.rank());
+    f.set_decomposition(*decomposition);
+    start_integrator(at, h, counters);
+    count_fewest();
   };
   try {
     while (t < scene.end) {
@@ -211,8 +302,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;
       while (t < t_next) {
-        t = integrator.step(t_next);
-        const ErkStats st = integrator.stats();
+        t = integrator->step(checkpoints->limit(t_next));  // checkpoint times are stop times too
+        const ErkStats st = integrator->stats();
         dt_max = std::max(dt_max, st.last_step);
         Verdict v;
         try {
@@ -221,14 +312,14 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
           v = {3, e.what()};
         }
         const long r = static_cast<long>(
-            comm.sum(static_cast<std::int64_t>(WallReflection(scene, mine.layout()).apply(integrator.state()))));
+            comm.sum(static_cast<std::int64_t>(WallReflection(scene, mine.layout()).apply(integrator->state()))));
         if (r) {  // sync point: every rank re-initialises
           reflections += r;
-          integrator.reset(t);
+          integrator->reset(t);
         }
         if (scene.reorder_every > 0 && st.steps % scene.reorder_every == 0) migrate(t);
         try {
-          checker.check(t, integrator.state(), mine.layout(), mine.ids());
+          checker.check(t, integrator->state(), mine.layout(), mine.ids());
         } catch (const NumericalFailure& e) {
           if (!v.code) v = {3, e.what()};
         }
@@ -236,8 +327,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
           v = {3, "time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " + std::to_string(t) +
                       " before time.end"};
         if (const int sig = pending_interrupt(); sig && !v.code)
-          v = {128 + sig, std::string("interrupted by ") + interrupt_name(sig) + " at t = " + std::to_string(t) +
-                              " (no checkpoint: runs over several ranks write none)"};
+          v = {128 + sig, std::string("interrupted by ") + interrupt_name(sig) + " at t = " + std::to_string(t)};
         v = agree(comm, v);
         if (v.code) {
           result.exit_code = v.code;
@@ -245,14 +335,12 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
           break;
         }
         progress.step(t, st.steps, st.last_step);
+        if (t < t_next) checkpoint_if_due(t);
       }
       if (result.exit_code) break;
-      ErkStats st = integrator.stats();
+      ErkStats st = integrator->stats();
       st.last_step = dt_max;
-      together(comm, [&] {
-        const std::vector<double> all = gather.gather(comm, mine);
-        if (root) out->write(t, all.data(), d0, st);
-      });
+      write_frame(t, st);
       progress.frame(t, st.steps, dt_max);
       ++frame;
       const bool steady = comm.max(static_cast<std::int64_t>(root && out->steady())) > 0;
@@ -263,22 +351,37 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
         }
         break;
       }
+      checkpoint_if_due(t);
+    }
+    if (result.exit_code > 128) {  // a signal: the checkpoint at the last completed step, as one process
+      result.interrupted = true;
+      result.checkpoint = write_checkpoint_at(t, whole_state(false));
+    } else if (!result.exit_code) {  // the last checkpoint, unless the scheduled one was written at t
+      result.checkpoint = last_checkpoint == t ? checkpoints->path() : write_checkpoint_at(t, whole_state(false));
     }
   } catch (const NumericalFailure& e) {  // ARKODE gave up: on every rank alike (global norms, agreed flags)
-    const Verdict v = agree(comm, {3, e.what(), integrator.failure_names_entry()});
+    const Verdict v = agree(comm, {3, e.what(), integrator->failure_names_entry()});
     result.exit_code = v.code;
     result.message = v.message;
-  } catch (const OutputError& e) {
+  } catch (const OutputError& e) {  // raised on every rank alike (together): keep what still fits, exit 5
     result.exit_code = 5;
     result.message = e.what();
+    if (result.message.rfind("cannot write " + checkpoints->path() + ":", 0) != 0) {
+      try {
+        result.checkpoint = write_checkpoint_at(t, whole_state(false));
+      } catch (const OutputError& again) {
+        result.message += std::string("; ") + again.what();
+      }
+    }
   }
   progress.finish();
-  const ErkStats st = integrator.stats();
+  const ErkStats st = integrator->stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   Verdict last{result.exit_code, result.message};
   if (root) {
     Json mpi = Json::object();
     mpi.set("ranks", ranks).set("halo_exchanges", f.exchanges()).set("migrations", migrations);
+    mpi.set("fewest_particles", static_cast<long>(fewest));
     out->set_mpi(mpi);
     if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
     try {
@@ -289,6 +392,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     }
   }
   last = agree(comm, last);
+  if (last.code != result.exit_code) result.checkpoint.clear();
   result.exit_code = last.code;
   result.message = last.message;
   return result;

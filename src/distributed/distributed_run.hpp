@@ -14,7 +14,16 @@
 //               reflections are counted over the ranks and re-initialise every rank
 //   agreement   after every step the ranks agree on failures and signals (rank_verdict.hpp)
 //   output      rank 0 gathers the state (gather_state.hpp) and writes what a one-process run
-//               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations"}
+//               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations",
+//               "fewest_particles"}; a rank may own no particles (it still takes part in every
+//               collective call)
+//   checkpoints rank 0 writes checkpoint.h5 as one process does (output.checkpoint_every, at the end,
+//               on a signal), the whole state in the model's particle order; a restart
+//               (--restart, on any number of ranks) deals the particles from the checkpoint's
+//               state. After a scheduled checkpoint the run does what a restart from it does: the
+//               particles dealt anew from the whole state (the same bisection and, on each rank,
+//               the same order) and a new integrator at that time, so that a restart on as many
+//               ranks continues bit for bit as the run that wrote the checkpoint.
 //
 // What runs only on one process is refused with InputError (exit 2): see check_distributable.
 #pragma once
@@ -25,8 +34,8 @@
 namespace arksph::distributed {
 
 // InputError (one line) for what a run over several ranks does not do yet: schemes other than
-// WCSPH, time.imex, output.checkpoint_every, --restart, dimension other than 2.
-void check_distributable(const Scene& scene, const RunOptions& options, int ranks);
+// WCSPH, time.imex, dimension other than 2.
+void check_distributable(const Scene& scene, int ranks);
 
 // Collective over `comm` (size > 1). The RunResult is the same on every rank.
 RunResult run_distributed(const Scene& scene, const RunOptions& options, const parallel::Communicator& comm);

@@ -9,21 +9,27 @@ StateGather::StateGather(const std::vector<std::int64_t>& ids, const StateLayout
   for (std::size_t i = 0; i < ids.size(); ++i) place_[ids[i]] = i;
 }
 
-std::vector<double> StateGather::gather(const parallel::Communicator& comm, const RankParticles& mine) const {
-  // Records: the id's bits, then the state entries of the particle in layout order.
+std::size_t StateGather::stride() const {
+  return 1 + 2 * static_cast<std::size_t>(layout_.dim) + (layout_.has_density ? 1 : 0) + (layout_.has_energy ? 1 : 0);
+}
+
+std::vector<double> StateGather::records(const RankParticles& mine) const {
   const StateLayout L = mine.layout();
   const std::size_t per = L.n ? L.size() / L.n : 0;
-  const std::size_t stride = 1 + 2 * static_cast<std::size_t>(L.dim) + (L.has_density ? 1 : 0) + (L.has_energy ? 1 : 0);
+  const std::size_t stride = this->stride();
   if (L.n && per + 1 != stride) throw std::logic_error("state gather: unexpected layout");
   const std::vector<double> y = mine.state();
-  std::vector<double> records;
-  records.reserve(L.n * stride);
+  std::vector<double> out;
+  out.reserve(L.n * stride);
   for (std::size_t a = 0; a < L.n; ++a) {
-    records.push_back(std::bit_cast<double>(mine.fields().id[a]));
-    for (std::size_t b = 0; b + 1 < stride; ++b) records.push_back(y[b * L.n + a]);
+    out.push_back(std::bit_cast<double>(mine.fields().id[a]));
+    for (std::size_t b = 0; b + 1 < stride; ++b) out.push_back(y[b * L.n + a]);
   }
-  const std::vector<double> all = comm.gatherv(records, 0);
-  if (comm.rank() != 0) return {};
+  return out;
+}
+
+std::vector<double> StateGather::assemble(const std::vector<double>& all) const {
+  const std::size_t stride = this->stride();
   std::vector<double> out(layout_.size());
   const std::size_t n = layout_.n;
   if (all.size() != n * stride) throw std::logic_error("state gather: the ranks hold another number of particles");
@@ -34,6 +40,16 @@ std::vector<double> StateGather::gather(const parallel::Communicator& comm, cons
     for (std::size_t b = 0; b + 1 < stride; ++b) out[b * n + it->second] = rec[1 + b];
   }
   return out;
+}
+
+std::vector<double> StateGather::gather(const parallel::Communicator& comm, const RankParticles& mine) const {
+  const std::vector<double> all = comm.gatherv(records(mine), 0);
+  if (comm.rank() != 0) return {};
+  return assemble(all);
+}
+
+std::vector<double> StateGather::allgather(const parallel::Communicator& comm, const RankParticles& mine) const {
+  return assemble(comm.allgatherv(records(mine)));
 }
 
 }  // namespace arksph::distributed

@@ -20,8 +20,16 @@ class StateGather {
   StateGather(const std::vector<std::int64_t>& ids, const StateLayout& layout);
   // Collective. Rank 0: the whole state in the model's layout; other ranks: empty.
   std::vector<double> gather(const parallel::Communicator& comm, const RankParticles& mine) const;
+  // Collective. The whole state in the model's layout on every rank (checkpoints: every rank then
+  // deals the particles anew from it, distributed/distributed_run.cpp).
+  std::vector<double> allgather(const parallel::Communicator& comm, const RankParticles& mine) const;
 
  private:
+  // This rank's particles as records: the id's bits, then the state entries in layout order.
+  std::vector<double> records(const RankParticles& mine) const;
+  // The whole state from every rank's records.
+  std::vector<double> assemble(const std::vector<double>& all) const;
+  std::size_t stride() const;
   StateLayout layout_;
   std::unordered_map<std::int64_t, std::size_t> place_;  // id -> index in the model
 };

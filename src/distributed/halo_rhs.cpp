@@ -138,6 +138,10 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   }
   if (L.has_density) place(ix.rho(), L.rho());
   if (L.has_energy) place(ix.e(), L.energy());
+  if (!ydot) {  // the fields only (output.pieces), as a whole frame's refresh
+    evaluator_->eval(t, y_all_.data(), nullptr);
+    return;
+  }
   ydot_all_.resize(L.size());
   evaluator_->eval(t, y_all_.data(), ydot_all_.data());
 
@@ -153,7 +157,6 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
     a2 = std::max(a2, s);
   }
   max_accel_ = std::sqrt(a2);
-  if (!ydot) return;
   for (int k = 0; k < ix.dim; ++k) {
     take(L.pos(k), mine.pos(k));
     take(L.vel(k), mine.vel(k));

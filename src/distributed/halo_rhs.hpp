@@ -40,10 +40,13 @@ class HaloRhs {
   HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, RankParticles& owned);
   // The decomposition the rank's particles were last migrated by; the next eval exchanges anew.
   void set_decomposition(const parallel::Decomposition& decomposition);
-  // Collective. ydot = f(t, y) for this rank's particles (ydot null: nothing stored).
+  // Collective. ydot = f(t, y) for this rank's particles (ydot null: the evaluator's fields only,
+  // as RhsEvaluator::eval refreshes them; the largest acceleration is kept from the last f).
   void eval(double t, const double* y, double* ydot);
   // The largest |du/dt| of this rank's particles at the last eval.
   double local_max_acceleration() const { return max_accel_; }
+  // The evaluator of the last eval: its fields hold this rank's particles first, then the halo.
+  const RhsEvaluator& evaluator() const { return *evaluator_; }
   long exchanges() const { return exchanges_; }  // halo exchanges (with a new evaluator) so far
   double cutoff() const { return cutoff_; }
   std::size_t halo_size() const { return halo_.size(); }

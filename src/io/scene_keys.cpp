@@ -182,6 +182,10 @@ std::vector<Group> general_keys() {
             .doc("simulated time between VTP frames (0: first and last only); at most 100,000 frames up to time.end").to(&Scene::every),
         number("output.checkpoint_every", 0.0).in(at_least(0)).unit("s")
             .doc("simulated time between checkpoint.h5 writes (0: only at the end); at most 100,000 up to time.end").to(&Scene::checkpoint_every),
+        flag("output.pieces", false)
+            .doc("runs over several MPI ranks: each rank writes its particles of a frame as particles_NNNNNN_rR.vtp and rank 0 "
+                 "particles_NNNNNN.pvtp, listed in particles.pvd; one process: ignored")
+            .to(&Scene::pieces),
         integer("metrics.ghia_re", 0).allowed({0, 100, 1000, 10000})
             .doc("Ghia et al. 1982 centreline errors at this Reynolds number (100, 1000 or 10000; 0: off); 2D lid-driven cavity only").to(&Scene::ghia_re),
         flag("metrics.poiseuille", false).doc("Poiseuille error of Basa et al. 2008 eqs. 36-39; 2D channel only (periodic in x, resting walls, force along x)")

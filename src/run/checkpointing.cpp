@@ -110,9 +110,14 @@ double Checkpointer::limit(double t_stop) {
   return stop_;
 }
 
-void Checkpointer::at(double t, TimeIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {
-  if (!due(t)) return;
+bool Checkpointer::take_due(double t) {
+  if (!due(t)) return false;
   while (due(t)) ++next_;
+  return true;
+}
+
+void Checkpointer::at(double t, TimeIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {
+  if (!take_due(t)) return;
   const double h = integrator.next_step();
   write(t, integrator, frames, reflections);
   integrator.restart_at(t, h);  // what a restart from this file does, see checkpointing.hpp
@@ -126,6 +131,11 @@ void Checkpointer::at_end(double t, TimeIntegrator& integrator, long frames, lon
 }
 
 std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frames, long reflections) {
+  return write_state(t, integrator.state(), integrator.stats(), integrator.next_step(), frames, reflections);
+}
+
+std::string Checkpointer::write_state(double t, const double* y, const ErkStats& st, double next_step, long frames,
+                                      long reflections) {
   const StateLayout& L = model_.rhs->layout();
   Checkpoint c;
   c.dimension = L.dim;
@@ -133,19 +143,18 @@ std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frame
   c.has_energy = L.has_energy;
   c.n = L.n;
   c.time = t;
-  const ErkStats st = integrator.stats();
   c.steps = st.steps;
   c.rhs_evals = st.rhs_evals;
   c.step_attempts = st.attempts;
   c.error_test_fails = st.error_test_fails;
   c.last_step = st.last_step;
-  c.next_step = integrator.next_step();
+  c.next_step = next_step;
   c.output_frame = frames;
   c.checkpoint_index = next_;
   c.wall_reflections = reflections;
   c.scene_toml = scene_.resolved_toml;
   c.run_id = run_id_;
-  c.state.assign(integrator.state(), integrator.state() + L.size());
+  c.state.assign(y, y + L.size());
   const ParticleSet& p = model_.particles;
   c.mass = p.mass;
   c.rho0 = p.rho0;

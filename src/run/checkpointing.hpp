@@ -61,6 +61,15 @@ class Checkpointer {
   // Unconditional write at (t, state) (interrupt). Returns the path.
   std::string write(double t, TimeIntegrator& integrator, long frames, long reflections);
 
+  // For a run whose whole state is not one integrator's (a decomposed run, distributed/): true once
+  // if the scheduled checkpoint is due at t (the schedule moves on), for the caller to write it
+  // with write_state and re-initialise as `at` does.
+  bool take_due(double t);
+  // Writes the checkpoint of the whole state y (the model's layout and particle order) with the
+  // integrator's counters `st` and its next step size. Returns the path.
+  std::string write_state(double t, const double* y, const ErkStats& st, double next_step, long frames,
+                          long reflections);
+
  private:
   bool due(double t) const;
   double next_time() const { return scheduled_time(next_, every_); }

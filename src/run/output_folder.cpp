@@ -48,7 +48,14 @@ bool is_run_file(const std::string& name) {
     return starts_with(name, prefix) && ends_with(name, ext) &&
            all_digits(name.substr(std::strlen(prefix), name.size() - std::strlen(prefix) - std::strlen(ext)));
   };
-  if (numbered("particles_", ".vtp") || numbered("interface_", ".csv")) return true;
+  if (numbered("particles_", ".vtp") || numbered("particles_", ".pvtp") || numbered("interface_", ".csv")) return true;
+  if (starts_with(name, "particles_") && ends_with(name, ".vtp")) {  // a rank's piece particles_NNNNNN_rR.vtp
+    const std::string mid = name.substr(10, name.size() - 14);
+    const auto r = mid.find("_r");
+    if (r != std::string::npos && r > 0 && r + 2 < mid.size() && all_digits(mid.substr(0, r)) &&
+        all_digits(mid.substr(r + 2)))
+      return true;
+  }
   return starts_with(name, "checkpoint") && ends_with(name, ".h5");
 }
 

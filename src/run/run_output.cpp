@@ -13,6 +13,7 @@
 #include "diagnostics/poiseuille.hpp"
 #include "core/expression.hpp"
 #include "io/frame_order.hpp"
+#include "io/pvtp_writer.hpp"
 #include "io/vtp_writer.hpp"
 #include "projection/divergence_operator.hpp"
 
@@ -132,7 +133,14 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
 
   t0 = clock_type::now();
   csv_.row(row);
-  if (pvd_) {
+  if (pvd_ && pieces_ > 0) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%06d.pvtp", frames_);
+    std::vector<std::string> pieces;
+    for (int r = 0; r < pieces_; ++r) pieces.push_back(piece_file_name(frames_, r));
+    write_pvtp(scene_.directory + "/" + name, pieces);
+    pvd_->add(t, name);
+  } else if (pvd_) {
     char name[64];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
     Frame fr;

@@ -37,6 +37,10 @@ class RunOutput {
   // summary.json "mpi": the ranks of the run (1 for one process) and, over several ranks, what the
   // decomposition did (distributed/distributed_run.hpp).
   void set_mpi(const Json& mpi) { mpi_ = mpi; }
+  // output.pieces on `ranks` ranks: each frame is particles_NNNNNN.pvtp naming the ranks' pieces
+  // (io/pvtp_writer.hpp), which the ranks write themselves; no whole frame is written.
+  void set_pieces(int ranks) { pieces_ = ranks; }
+  int frames() const { return frames_; }  // frames written so far: the number of the next one
   void set_reorders(long count, double seconds) {
     reorders_ = count;
     reorder_seconds_ = seconds;
@@ -61,6 +65,7 @@ class RunOutput {
   double output_seconds_ = 0, diagnostic_seconds_ = 0;
   Json mpi_ = Json::object().set("ranks", 1);
   long reorders_ = -1;  // -1: re-sorting off
+  int pieces_ = 0;      // 0: whole frames; else the ranks whose pieces a frame's index names
   double reorder_seconds_ = 0;
 };
 

@@ -15,6 +15,7 @@
 #include "run/checkpointing.hpp"  // checkpoints and restart
 #include "run/interrupt.hpp"
 #include "run/output_folder.hpp"
+#include "run/output_start.hpp"
 #include "run/output_resume.hpp"
 #include "run/particle_reorder.hpp"
 #include "run/progress.hpp"
@@ -61,23 +62,6 @@ void print_run_header(const Scene& scene, const Model& model) {
   for (const auto& t : model.terms) std::printf(" %s", t.c_str());
   std::printf("\n  output: %s\n", scene.directory.c_str());
   std::fflush(stdout);
-}
-
-// Clears an earlier run's outputs (fresh run) or checks that the folder holds this run's (restart);
-// returns the run id.
-std::string start_output_folder(const OutputFolder& folder, const Scene& scene, const RunOptions& options) {
-  if (!options.restart) {
-    folder.remove_run_outputs();
-    return new_run_id();
-  }
-  const std::string& mine = options.restart->run_id;
-  bool unidentified = false;  // output without a run id cannot be this run's: it writes its id
-  const std::string found = folder.run_id(&unidentified);
-  if (!mine.empty() && ((!found.empty() && found != mine) || unidentified))
-    throw InputError(options.restart_path + ": output.directory: " + scene.directory +
-                     " holds the output of another run (run id " + (found.empty() ? "none" : echo_value(found, 40)) +
-                     ", the checkpoint's is " + mine + "); continue in the run's own folder or give an empty --out");
-  return mine.empty() ? new_run_id() : mine;
 }
 
 }  // namespace

@@ -1,0 +1,23 @@
+#include "run/output_start.hpp"
+
+#include "core/errors.hpp"
+#include "io/checkpoint.hpp"
+
+namespace arksph {
+
+std::string start_output_folder(const OutputFolder& folder, const Scene& scene, const RunOptions& options) {
+  if (!options.restart) {
+    folder.remove_run_outputs();
+    return new_run_id();
+  }
+  const std::string& mine = options.restart->run_id;
+  bool unidentified = false;  // output without a run id cannot be this run's: it writes its id
+  const std::string found = folder.run_id(&unidentified);
+  if (!mine.empty() && ((!found.empty() && found != mine) || unidentified))
+    throw InputError(options.restart_path + ": output.directory: " + scene.directory +
+                     " holds the output of another run (run id " + (found.empty() ? "none" : echo_value(found, 40)) +
+                     ", the checkpoint's is " + mine + "); continue in the run's own folder or give an empty --out");
+  return mine.empty() ? new_run_id() : mine;
+}
+
+}  // namespace arksph

@@ -1,0 +1,35 @@
+"""Shared by the scripts that run `arksph run` under the MPI launcher: named checks that print
+ok/FAILED and are counted, and one run (on one process, or on several ranks through MPIEXEC) with a
+timeout, so that a rank left waiting in a collective call fails the test instead of hanging it."""
+import subprocess
+import sys
+
+TIMEOUT = 300  # seconds per run
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok:     " if ok else "FAILED: ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def launch(arksph, mpiexec, flags, ranks, args, out):
+    """Runs `arksph run ARGS --out OUT --quiet` on `ranks` processes; returns (exit code or None on
+    timeout, stderr)."""
+    cmd = [arksph, "run"] + args + ["--out", out, "--quiet"]
+    if ranks > 1:
+        cmd = [mpiexec, "-n", str(ranks)] + flags + cmd
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        check(False, " ".join(cmd) + " ended within %d s" % TIMEOUT)
+        return None, ""
+    print(" ".join(cmd), "->", p.returncode)
+    return p.returncode, p.stderr
+
+
+def finish(name):
+    print("%s: %d failure(s)" % (name, len(failures)))
+    sys.exit(1 if failures else 0)

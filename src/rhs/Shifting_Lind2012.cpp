@@ -35,9 +35,10 @@ namespace arksph {
 namespace {
 
 constexpr int kAntiClumpN = 4;  // Lind et al. 2012 eq. 10
-// Explicit steps keep the linearised shifting stable (rhs/shifting_stability.hpp) when rate * dt <= 2,
-// the reach of every Runge-Kutta table of order <= 2 along the negative real axis (higher orders
-// reach further); 0.75 of it leaves room for a lattice disordered past the linear analysis.
+// Explicit steps keep the linearised shifting stable (rhs/shifting_stability.hpp) when rate * dt <= 2:
+// the reach along the negative real axis of forward Euler and of the two-stage second-order tables
+// (Heun-Euler, the default); the tables of higher order reach further. 0.75 of it leaves room for a
+// lattice disordered past the linear analysis.
 constexpr double kStableRateStep = 0.75 * 2.0;
 
 class Shifting final : public ParticleTerm<Shifting> {

@@ -13,6 +13,9 @@
 #include "diagnostics/flow_metrics.hpp"
 #include "distributed/gather_state.hpp"
 #include "distributed/halo_rhs.hpp"
+#ifdef ARKSPH_WITH_HYPRE
+#include "distributed/halo_projection.hpp"
+#endif
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
 #include "distributed/rank_piece.hpp"
@@ -20,6 +23,7 @@
 #include "integrate/erk_integrator.hpp"
 #include "parallel/migration.hpp"
 #include "parallel/rcb.hpp"
+#include "projection/body_force_split.hpp"
 #include "io/checkpoint.hpp"
 #include "io/pvtp_writer.hpp"
 #include "run/checkpointing.hpp"
@@ -105,8 +109,26 @@ parallel::Decomposition bisect_state(const parallel::CellGrid& grid, const State
 void check_distributable(const Scene& scene, int ranks) {
   const std::string on =
       " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
-  if (!scheme_traits(scene.scheme).weakly_compressible)
+  const SchemeTraits& traits = scheme_traits(scene.scheme);
+  // Projection schemes: isph with the projection after each step (halo_projection.hpp), with hypre.
+  if (traits.grid || (!traits.weakly_compressible && !traits.projection))
     throw InputError(scene.source + ": scheme " + scene.scheme + on);
+  if (traits.projection) {
+#ifndef ARKSPH_WITH_HYPRE
+    throw InputError(scene.source + ": scheme " + scene.scheme + " (this build has no hypre for the pressure solve)" + on);
+#endif
+    if (scene.projection != "cummins_rudman")
+      throw InputError(scene.source + ": method.projection = " + scene.projection + on);
+    if (scene.projection_points != "step")
+      throw InputError(scene.source + ": method.projection_points = " + scene.projection_points + on);
+    if (scene.density_correction != "none")
+      throw InputError(scene.source + ": method.density_correction = " + scene.density_correction + on);
+    if (scene.ppe_operator != "approximate")
+      throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
+    if (BodyForceSplit(scene).active())
+      throw InputError(scene.source + ": fluid.body_force with walls under scheme " + scene.scheme +
+                       " (the body-force split of the projection)" + on);
+  }
   if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
   if (scene.dimension != 2)
     throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
@@ -174,6 +196,30 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   HaloRhs f(scene, model, comm, mine);
   f.set_decomposition(*decomposition);
   const StateGather gather(model.particles.id, layout);
+#ifdef ARKSPH_WITH_HYPRE
+  // ISPH: the projection after each step over the ranks, its pressure pinned at the particle a
+  // one-process run pins at the start (its particle 0: after the re-sort at t = 0, or the
+  // checkpoint's first).
+  std::unique_ptr<HaloProjection> projection;
+  if (model.projection) {
+    std::int64_t pinned = model.particles.id[0];
+    if (!restarting && scene.reorder_every > 0) pinned = model.particles.id[ParticleReorder(scene, model).order_of(y0.data())[0]];
+    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, pinned);
+    for (std::string& term : model.terms)
+      if (term == "projection:ppe-" + scene.ppe_solver) term = "projection:ppe-hypre";
+    if (root) {
+      std::printf("  pressure Poisson equation: hypre PCG + BoomerAMG over the ranks, tolerance %g "
+                  "(method.ppe_solver = %s applies to one process)\n", scene.ppe_tolerance, scene.ppe_solver.c_str());
+      std::fflush(stdout);
+    }
+  }
+#endif
+  // The rank's particles changed (migration, a new deal): the projection numbers its rows anew.
+  const auto moved = [&] {
+#ifdef ARKSPH_WITH_HYPRE
+    if (projection) projection->particles_moved();
+#endif
+  };
 
   ErkOptions eo = integrator_options(scene);
   eo.state_vector = mpi_state_vector(comm.comm());
@@ -184,6 +230,9 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
                        comm.max(f.local_max_acceleration()));
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };
+#ifdef ARKSPH_WITH_HYPRE
+  if (projection) eo.postprocess = [&projection](double tt, double* yl) { projection->project(tt, yl); };
+#endif
   // A new integrator at (t, the rank's state) with first step h (0: the stability limit) and the
   // counters of the run so far: at the start, on restart, and after each scheduled checkpoint, so
   // that a restart from that checkpoint continues as the run that wrote it (see the header).
@@ -229,6 +278,12 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
         write_rank_piece(scene.directory + "/" + piece_file_name(number, comm.rank()), at, f, mine, grid.domain());
       });
     }
+#ifdef ARKSPH_WITH_HYPRE
+    if (projection && projection->stats().solves > 0) {  // the last projection's pressure (as one process)
+      std::vector<double> p = gather.gather_values(comm, projection->pressure_ids(), projection->pressure());
+      if (root) out->set_pressure(std::move(p));
+    }
+#endif
     together(comm, [&] {
       const std::vector<double> all = whole_state(false);
       if (root) out->write(at, all.data(), d0, st);
@@ -268,6 +323,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     parallel::migrate(comm, *decomposition, F);
     mine.refresh_ids();
     f.set_decomposition(*decomposition);
+    moved();
     integrator->resize(mine.state(), at, h);
     count_fewest();
     ++migrations;
@@ -293,6 +349,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     decomposition.emplace(bisect_state(grid, layout, all.data(), ranks, scene));
     mine = RankParticles(model.particles, layout, all.data(), *decomposition, comm.rank());
     f.set_decomposition(*decomposition);
+    moved();
     start_integrator(at, h, counters);
     count_fewest();
   };
@@ -302,6 +359,9 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;
       while (t < t_next) {
+#ifdef ARKSPH_WITH_HYPRE
+        if (projection) projection->begin_step(t, integrator->state());
+#endif
         t = integrator->step(checkpoints->limit(t_next));  // checkpoint times are stop times too
         const ErkStats st = integrator->stats();
         dt_max = std::max(dt_max, st.last_step);
@@ -384,6 +444,9 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     mpi.set("fewest_particles", static_cast<long>(fewest));
     out->set_mpi(mpi);
     if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
+#ifdef ARKSPH_WITH_HYPRE
+    if (projection) out->set_projection_report(projection->stats(), HaloProjection::solver_name());
+#endif
     try {
       out->finish(result, st, wall, rhs.evaluations() - diag_before + 1, reflections, f.exchanges());
     } catch (const OutputError& e) {

@@ -23,6 +23,10 @@ class StateGather {
   // Collective. The whole state in the model's layout on every rank (checkpoints: every rank then
   // deals the particles anew from it, distributed/distributed_run.cpp).
   std::vector<double> allgather(const parallel::Communicator& comm, const RankParticles& mine) const;
+  // Collective. One value per particle (values[i] of the particle with id ids[i], this rank's) in the
+  // model's particle order on rank 0 (the projection's pressure for the frames); other ranks: empty.
+  std::vector<double> gather_values(const parallel::Communicator& comm, const std::vector<std::int64_t>& ids,
+                                    const std::vector<double>& values) const;
 
  private:
   // This rank's particles as records: the id's bits, then the state entries in layout order.

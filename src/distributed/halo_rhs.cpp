@@ -98,6 +98,18 @@ void HaloRhs::build_evaluator() {
                                               terms_from_scene(scene_, model_.sound_speed), options);
 }
 
+std::vector<double> HaloRhs::halo_values(const std::vector<double>& own) const {
+  const int dim = owned_.index().dim;
+  // Records of one field beyond the coordinates (update shifts the coordinates only).
+  parallel::ParticleFields from(dim, dim + 1), to(dim, dim + 1);
+  from.id = owned_.fields().id;
+  from.field[static_cast<std::size_t>(dim)] = own;
+  from.field[static_cast<std::size_t>(dim)].resize(from.id.size(), 0.0);
+  to.resize(halo_.size());
+  exchange_.update(comm_, from, {dim}, to);
+  return std::move(to.field[static_cast<std::size_t>(dim)]);
+}
+
 void HaloRhs::eval(double t, const double* y, double* ydot) {
   parallel::ParticleFields& F = owned_.fields();
   const RankFieldIndex& ix = owned_.index();

@@ -50,6 +50,10 @@ class HaloRhs {
   long exchanges() const { return exchanges_; }  // halo exchanges (with a new evaluator) so far
   double cutoff() const { return cutoff_; }
   std::size_t halo_size() const { return halo_.size(); }
+  // Collective. The values `own` of this rank's particles (one each, in the rank's order) at their
+  // halo copies of the last eval, in the evaluator's order of the copies (the projection's row
+  // numbers and pressures: halo_projection.hpp). One all-to-all along the exchange's send lists.
+  std::vector<double> halo_values(const std::vector<double>& own) const;
 
  private:
   void exchange();

@@ -116,8 +116,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     row.push_back(steady_.rate());
   }
   if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
-    const double* p = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
-                                                                                 : f.p.data();
+    const double* p = projected_pressure() ? projected_pressure() : f.p.data();
     std::vector<std::vector<double>> rows;
     for (std::size_t a = 0; a < f.n_real; ++a) rows.push_back({f.x[a], f.u[a], p[a], f.rho[a]});
     write_csv(scene_.directory + "/profile_1d.csv", {"x", "u", "pressure", "density"}, rows);
@@ -151,8 +150,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     fr.y = f.dim == 2 ? f.y.data() : nullptr;
     fr.u = f.u.data();
     fr.v = f.dim == 2 ? f.v.data() : nullptr;
-    fr.pressure = model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data()
-                                                                              : f.p.data();
+    fr.pressure = projected_pressure() ? projected_pressure() : f.p.data();
     fr.density = f.rho.data();
     std::vector<double> rho_sum = number_density(f);  // Szewc eq. 21: m_a sum_b W_ab
     for (std::size_t a = 0; a < f.n_real; ++a) rho_sum[a] *= f.m[a];
@@ -165,6 +163,11 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   }
   ++frames_;
   output_seconds_ += since(t0);
+}
+
+const double* RunOutput::projected_pressure() const {
+  if (!pressure_.empty()) return pressure_.data();
+  return model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data() : nullptr;
 }
 
 void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
@@ -192,7 +195,8 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
     j.set("imex", im);
   }
   Json timing = Json::object();
-  const double ppe = model_.projection ? model_.projection->stats().seconds : 0.0;
+  const bool reported = !ppe_solver_.empty();  // set_projection_report
+  const double ppe = reported ? ppe_stats_.seconds : model_.projection ? model_.projection->stats().seconds : 0.0;
   timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);
   timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
   if (reorders_ >= 0) {
@@ -204,9 +208,9 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   // refresh, counted in neighbors and rhs too, so it is not subtracted.)
   timing.set("setup_and_integrator", wall_seconds - rt.neighbors - rt.terms - diagnostic_seconds_ - output_seconds_);
   if (model_.projection) {
-    const ProjectionStats& ps = model_.projection->stats();
+    const ProjectionStats& ps = reported ? ppe_stats_ : model_.projection->stats();
     Json ppe_json = Json::object();
-    ppe_json.set("solver", model_.projection->solver_name()).set("solves", ps.solves);
+    ppe_json.set("solver", reported ? ppe_solver_ : model_.projection->solver_name()).set("solves", ps.solves);
     ppe_json.set("solve_seconds", ps.solve_seconds).set("assembly_seconds", ps.assembly_seconds);
     ppe_json.set("seconds_per_solve", ps.solves ? ps.seconds / ps.solves : 0.0);
     ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);

@@ -41,6 +41,14 @@ class RunOutput {
   // (io/pvtp_writer.hpp), which the ranks write themselves; no whole frame is written.
   void set_pieces(int ranks) { pieces_ = ranks; }
   int frames() const { return frames_; }  // frames written so far: the number of the next one
+  // A run whose projection is not the model's (the decomposed ISPH run, distributed/halo_projection.hpp):
+  // summary.json's "ppe" from these counters and solver name, and the frames' pressure from
+  // set_pressure (the model's particle order, the last projection's; until set, as before).
+  void set_projection_report(const ProjectionStats& stats, const std::string& solver) {
+    ppe_stats_ = stats;
+    ppe_solver_ = solver;
+  }
+  void set_pressure(std::vector<double> pressure) { pressure_ = std::move(pressure); }
   void set_reorders(long count, double seconds) {
     reorders_ = count;
     reorder_seconds_ = seconds;
@@ -67,6 +75,10 @@ class RunOutput {
   long reorders_ = -1;  // -1: re-sorting off
   int pieces_ = 0;      // 0: whole frames; else the ranks whose pieces a frame's index names
   double reorder_seconds_ = 0;
+  std::string ppe_solver_;  // empty: the model's projection reports itself
+  ProjectionStats ppe_stats_;
+  std::vector<double> pressure_;  // the projection's pressure when not the model's (set_pressure)
+  const double* projected_pressure() const;
 };
 
 }  // namespace arksph

@@ -8,8 +8,9 @@ Taylor-Green vortex (25 x 25) on 2 and 3 ranks against the one-process run:
   - summary.json "mpi": {"ranks": P} (and {"ranks": 1} for one process);
   - with method.reorder_every = 5 the particles migrate (summary mpi.migrations > 0) and the
     results still agree;
-  - a scheme or option not run over several ranks (isph, time.imex) exits 2 on every rank with one
-    message from rank 0 (checkpoints and restarts: check_distributed_restart.py);
+  - a scheme or option not run over several ranks (isph-gpps, time.imex) exits 2 on every rank with
+    one message from rank 0 (the isph runs and their refusals: check_distributed_isph.py;
+    checkpoints and restarts: check_distributed_restart.py);
   - a right-hand side that turns NaN on the particles of one rank (a body force NaN for x > 0.8
     after t = 0.02) ends every rank with exit code 3, as the one-process run, within the timeout
     (no rank left waiting), and the message names the particle as the one-process run's does;
@@ -99,7 +100,7 @@ compare("default_cavity", ["--set", "fluid.spacing=0.04"] + short)
 compare("vortex", [vortex] + short)
 compare("vortex_migrating", [vortex, "--set", "method.reorder_every=5"] + short)
 
-for what, args in [("scheme isph", [vortex, "--set", "method.scheme=isph"]),
+for what, args in [("scheme isph-gpps", [vortex, "--set", "method.scheme=isph-gpps"]),
                    ("time.imex", [vortex, "--set", "time.imex=true"])]:
     # Every attempt must exit 2. mpirun's output forwarding can lose the one line when all ranks end
     # at once (seen once in a clean build), so the message is looked for in up to three attempts.

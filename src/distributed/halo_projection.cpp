@@ -1,0 +1,129 @@
+#include "distributed/halo_projection.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+
+#include "projection/ppe_assembly.hpp"
+
+namespace arksph::distributed {
+
+namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
+                               RankParticles& owned, std::int64_t pinned_id)
+    : comm_(comm),
+      f_(f),
+      owned_(owned),
+      pinned_id_(pinned_id),
+      solver_(comm, scene.ppe_tolerance),
+      centre_positions_(scene.centre_positions),
+      difference_divergence_(scene.ppe_divergence == "difference"),
+      zero_min_level_(scene.ppe_pressure_level == "zero_min"),
+      pressure_offset_(scene.ppe_pressure_offset) {}
+
+void HaloProjection::particles_moved() {
+  numbered_ = false;
+  solution_.clear();
+  y_prev_.clear();
+}
+
+void HaloProjection::begin_step(double t, const double* y) {
+  t_prev_ = t;
+  y_prev_.assign(y, y + owned_.layout().size());
+}
+
+void HaloProjection::project(double t, double* y) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const double dt = t - t_prev_;
+  if (dt <= 0) return;  // the same on every rank (the same steps)
+  const StateLayout L = owned_.layout();
+  const std::size_t n = L.n;
+
+  // 1. Fields at r* with u* over the rank's particles and the halo (the copies take u* too).
+  f_.eval(t, y, nullptr);
+  const FluidFields& f = f_.evaluator().fields();
+  const auto ta = std::chrono::steady_clock::now();
+  if (!numbered_) {  // the rows of the rank's particles, after a deal or migration
+    range_ = distributed_ppe::global_rows(comm_, n);
+    pinned_row_ = distributed_ppe::row_of_id(comm_, owned_.ids(), range_, pinned_id_);
+    own_rows_.resize(n);
+    for (std::size_t a = 0; a < n; ++a) own_rows_[a] = static_cast<double>(range_.first + static_cast<std::int64_t>(a));
+    numbered_ = true;
+  }
+  // The halo copies' rows (the halo may have been exchanged anew by this or any earlier f).
+  const std::vector<double> halo_rows = f_.halo_values(own_rows_);
+  row_of_.resize(n + halo_rows.size());
+  for (std::size_t a = 0; a < n; ++a) row_of_[a] = range_.first + static_cast<std::int64_t>(a);
+  for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
+
+  // 2. Source and rows of the owned particles (the halo's divergences are not used).
+  const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, div, dt, rows_);
+  stats_.assembly_seconds += since(ta);
+  const auto ts = std::chrono::steady_clock::now();
+  // solution_ keeps the pinned system's own solution (P_pinned = 0) as the next warm start, as in
+  // one process (a start shifted by a constant would hand CG a smooth error).
+  const distributed_ppe::HypreSolveReport rep = solver_.solve(rows_, solution_);
+  stats_.solve_seconds += since(ts);
+  ++stats_.solves;
+  stats_.iterations += rep.iterations;
+  stats_.last_residual = rep.relative_residual;
+  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+
+  // 3. The level over all ranks: zero minimum or zero mean, then the offset.
+  double level = 0;
+  if (zero_min_level_) {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (double p : solution_) lowest = std::min(lowest, p);
+    level = -comm_.max(-lowest);
+  } else {
+    double sum = 0;
+    for (double p : solution_) sum += p;
+    level = comm_.sum(sum) / static_cast<double>(range_.total);
+  }
+  pressure_.resize(n);
+  for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
+  pressure_ids_ = owned_.ids();
+  // P at every real point of the evaluator: the rank's particles, then their copies' owners' P.
+  std::vector<double> p_all(pressure_);
+  const std::vector<double> halo_p = f_.halo_values(pressure_);
+  p_all.insert(p_all.end(), halo_p.begin(), halo_p.end());
+
+  // Velocity correction, C&R eq. 11 (ghosts carry their source's P: FluidFields::point_pressure).
+  double* u = y + L.vel(0);
+  double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    const double pa = p_all[a] / (f.rho[a] * f.rho[a]);
+    double gx = 0, gy = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const double pb = f.point_pressure(p_all, b) / (f.rho[b] * f.rho[b]);
+      const double c = f.m[b] * (pb + pa) * F;
+      gx += c * rx;
+      gy += c * ry;
+    });
+    u[a] -= dt * gx;
+    if (v) v[a] -= dt * gy;
+  }
+
+  // 4. Positions centred in time, C&R eq. 12, plus the step's regularisation displacement dt du_s
+  // (du_s of the fields at r*), as in one process.
+  if (centre_positions_ && y_prev_.size() == L.size()) {
+    for (int k = 0; k < L.dim; ++k) {
+      const std::vector<double>& shift = k == 0 ? f.shift_u : f.shift_v;
+      for (std::size_t a = 0; a < n; ++a) {
+        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
+        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
+        if (!shift.empty()) y[L.pos(k) + a] += dt * shift[a];
+      }
+    }
+  }
+  stats_.seconds += since(t0);
+}
+
+}  // namespace arksph::distributed

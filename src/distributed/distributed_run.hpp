@@ -12,6 +12,8 @@
 //               the particles migrate to the owners of their positions by a new bisection, and the
 //               integrator is re-initialised there (restart_at, as after a re-sort); wall
 //               reflections are counted over the ranks and re-initialise every rank
+//   projection  isph: the Cummins & Rudman projection after each accepted step over the rank's
+//               particles and halo, the PPE solved by hypre over the ranks (halo_projection.hpp)
 //   agreement   after every step the ranks agree on failures and signals (rank_verdict.hpp)
 //   output      rank 0 gathers the state (gather_state.hpp) and writes what a one-process run
 //               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations",
@@ -33,8 +35,10 @@
 
 namespace arksph::distributed {
 
-// InputError (one line) for what a run over several ranks does not do yet: schemes other than
-// WCSPH, time.imex, dimension other than 2.
+// InputError (one line, naming the key) for what a run over several ranks does not do yet:
+// isph-gpps, time.imex, dimension other than 2; under isph anything but the projection after each
+// step (halo_projection.hpp) with hypre: the constrained projection, projection after each stage,
+// a density correction, the exact operator, a body force with walls.
 void check_distributable(const Scene& scene, int ranks);
 
 // Collective over `comm` (size > 1). The RunResult is the same on every rank.

@@ -197,14 +197,12 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   f.set_decomposition(*decomposition);
   const StateGather gather(model.particles.id, layout);
 #ifdef ARKSPH_WITH_HYPRE
-  // ISPH: the projection after each step over the ranks, its pressure pinned at the particle a
-  // one-process run pins at the start (its particle 0: after the re-sort at t = 0, or the
-  // checkpoint's first).
+  // ISPH: the projection after each step over the ranks, its pressure pinned at the first particle
+  // of rank 0's model for the whole run: the set-up's first, or the checkpoint's, which is the
+  // set-up's again for a checkpoint written on ranks (so a restart pins the same particle).
   std::unique_ptr<HaloProjection> projection;
   if (model.projection) {
-    std::int64_t pinned = model.particles.id[0];
-    if (!restarting && scene.reorder_every > 0) pinned = model.particles.id[ParticleReorder(scene, model).order_of(y0.data())[0]];
-    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, pinned);
+    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, model.particles.id[0]);
     for (std::string& term : model.terms)
       if (term == "projection:ppe-" + scene.ppe_solver) term = "projection:ppe-hypre";
     if (root) {

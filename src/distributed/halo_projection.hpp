@@ -13,10 +13,10 @@
 //      grad_a W_ab (C&R eq. 11) of the owned particles, wall ghosts carrying their source's P;
 //   4. optionally the positions centred in time (C&R eq. 12) plus the step's regularisation
 //      displacement, as in one process.
-// The pressure level: one particle (one global id for the whole run) is pinned to P = 0, the one a
-// one-process run pins at the start (its particle 0 after the set-up's re-sort; ppe_assembly.hpp).
-// With unequal particle volumes the Neumann system is only approximately consistent and the pinned
-// particle shows in the solution at the level of the inconsistency (docs/parallel.md).
+// The pressure level: one particle (one global id for the whole run) is pinned to P = 0, as one
+// process pins its particle 0 (ppe_assembly.hpp). With unequal particle volumes the Neumann system
+// is only approximately consistent and the pinned particle shows in the solution at the level of
+// the inconsistency (docs/parallel.md); one process's particle 0 changes with its re-sorts.
 //
 // What this does not do (refused on several ranks by check_distributable): the constrained
 // projection, isph-gpps, projection after each stage, the Pozorski-Wawrenczuk density correction,

@@ -9,6 +9,9 @@ against the one-process run, whose KLU solves each PPE exactly (to round-off):
     by particle id within POISSON of the largest speed, summary.json "ppe" with a solve per step;
   - the comparison can fail: with the ranks' Poisson tolerance loosened to 1e-5 the spin-down
     differs by more than POISSON;
+  - a checkpoint at t = 0.1 of a 2-rank run (migrations every 5 steps) restarted on 2 ranks ends
+    with every array of the last frame bit for bit that of the uninterrupted 2-rank run (both pin
+    the same particle and start the solver cold at the checkpoint);
   - what the ranks do not run exits 2 on every rank with one message naming the key: isph-gpps,
     the constrained projection, the projection after each stage, the Pozorski-Wawrenczuk density
     correction, the exact operator, a body force with walls.
@@ -110,6 +113,27 @@ compare("spin_down", spin)
 compare("spin_down_migrating", spin + ["--set", "method.reorder_every=5"])
 compare("vortex", vortex)
 compare("spin_down_loose", spin, ranks_args=["--set", "method.ppe_tolerance=1e-5"], within=False, ranks_list=(2,))
+
+# Restart on the same rank count: bit for bit (docs/parallel.md, "Checkpoints and restart").
+every = ["--set", "output.checkpoint_every=0.1", "--set", "method.reorder_every=5"]
+whole, code_w, _ = run("restart-whole", 2, spin + every)
+part, code_p, _ = run("restart-part", 2, spin + every + ["--set", "time.end=0.1"])
+check(code_w == 0 and code_p == 0, "restart: the 2-rank runs to t = 0.2 and t = 0.1 exit 0")
+if code_w == 0 and code_p == 0:
+    resumed = os.path.join(work, "restart-resumed")
+    shutil.rmtree(resumed, ignore_errors=True)
+    shutil.copytree(part, resumed)
+    code, _ = launch(arksph, mpiexec, flags, 2, ["--restart", os.path.join(resumed, "checkpoint.h5"),
+                                                 "--set", "time.end=0.2"], resumed)
+    check(code == 0, "restart: the checkpoint at t = 0.1 restarted on 2 ranks exits 0")
+    if code == 0:
+        last = os.path.basename(sorted(glob.glob(os.path.join(whole, "particles_*.vtp")))[-1])
+        a = read_arrays(os.path.join(whole, last))
+        b = read_arrays(os.path.join(resumed, last))
+        same = sorted(a) == sorted(b) and all(list(a[k]) == list(b[k]) for k in a)
+        check(same and summary(whole)["steps"] == summary(resumed)["steps"],
+              "restart: %s of the restarted run equals the uninterrupted run's bit for bit (arrays %s), "
+              "%d steps" % (last, sorted(k for k in a if k in b and list(a[k]) == list(b[k])), summary(resumed)["steps"]))
 
 refused = [("scheme isph-gpps", ["--set", "method.scheme=isph-gpps"], "isph-gpps"),
            ("method.projection = constrained", ["--set", "method.projection=constrained"], "method.projection"),

@@ -23,7 +23,6 @@
 #include "integrate/erk_integrator.hpp"
 #include "parallel/migration.hpp"
 #include "parallel/rcb.hpp"
-#include "projection/body_force_split.hpp"
 #include "io/checkpoint.hpp"
 #include "io/pvtp_writer.hpp"
 #include "run/checkpointing.hpp"
@@ -125,9 +124,6 @@ void check_distributable(const Scene& scene, int ranks) {
       throw InputError(scene.source + ": method.density_correction = " + scene.density_correction + on);
     if (scene.ppe_operator != "approximate")
       throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
-    if (BodyForceSplit(scene).active())
-      throw InputError(scene.source + ": fluid.body_force with walls under scheme " + scene.scheme +
-                       " (the body-force split of the projection)" + on);
   }
   if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
   if (scene.dimension != 2)

@@ -21,6 +21,7 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       owned_(owned),
       pinned_id_(pinned_id),
       solver_(comm, scene.ppe_tolerance),
+      split_(scene),
       centre_positions_(scene.centre_positions),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
@@ -33,6 +34,8 @@ void HaloProjection::particles_moved() {
 }
 
 void HaloProjection::begin_step(double t, const double* y) {
+  // The stages of a step projected at its end carry (t - t_n) g (body_force_split.hpp).
+  f_.set_slip_origin(split_.active(), t);
   t_prev_ = t;
   y_prev_.assign(y, y + owned_.layout().size());
 }
@@ -45,7 +48,23 @@ void HaloProjection::project(double t, double* y) {
   const std::size_t n = L.n;
 
   // 1. Fields at r* with u* over the rank's particles and the halo (the copies take u* too).
+  double* u = y + L.vel(0);
+  double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+  if (split_.active()) {  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
+    split_.at(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, gx_, gy_);
+    saved_u_.assign(u, u + n);
+    if (v) saved_v_.assign(v, v + n);
+    for (std::size_t a = 0; a < n; ++a) {
+      u[a] -= dt * gx_[a];
+      if (v) v[a] -= dt * gy_[a];
+    }
+  }
+  f_.set_slip_origin(false, 0.0);  // the increment is out of u* above: plain images
   f_.eval(t, y, nullptr);
+  if (split_.active()) {
+    std::copy(saved_u_.begin(), saved_u_.end(), u);
+    if (v) std::copy(saved_v_.begin(), saved_v_.end(), v);
+  }
   const FluidFields& f = f_.evaluator().fields();
   const auto ta = std::chrono::steady_clock::now();
   if (!numbered_) {  // the rows of the rank's particles, after a deal or migration
@@ -62,7 +81,12 @@ void HaloProjection::project(double t, double* y) {
   for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
 
   // 2. Source and rows of the owned particles (the halo's divergences are not used).
-  const std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  if (split_.active()) {
+    const std::vector<double> dg = split_.divergence(f);
+    const std::vector<double> flux = neumann_source(f);
+    for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
+  }
   distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, div, dt, rows_);
   stats_.assembly_seconds += since(ta);
   const auto ts = std::chrono::steady_clock::now();
@@ -94,9 +118,8 @@ void HaloProjection::project(double t, double* y) {
   const std::vector<double> halo_p = f_.halo_values(pressure_);
   p_all.insert(p_all.end(), halo_p.begin(), halo_p.end());
 
-  // Velocity correction, C&R eq. 11 (ghosts carry their source's P: FluidFields::point_pressure).
-  double* u = y + L.vel(0);
-  double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+  // Velocity correction, C&R eq. 11 (ghosts carry their source's P, plus the hydrostatic step under
+  // a body force: FluidFields::point_pressure).
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     const double pa = p_all[a] / (f.rho[a] * f.rho[a]);

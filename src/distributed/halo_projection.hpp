@@ -2,7 +2,9 @@
 // rank of a decomposed run, applied to the rank's state after each accepted step (ERKStep's
 // post-process step function: every rank takes the same steps, so the calls are collective):
 //   1. fields at r* with u* over the rank's particles and its halo (HaloRhs::eval(t, y, nullptr):
-//      the copies take the step end's positions and velocities u* from their owners);
+//      the copies take the step end's positions and velocities u* from their owners); under a body
+//      force with walls u* - dt g, and the source and the wall points' pressures take the force's
+//      wall flux (projection/body_force_split.hpp, as in one process);
 //   2. div(u*) of the owned particles (C&R eq. 17, or the difference form), their rows of the PPE
 //      L(P) = div(u*)/dt with global row numbers (distributed_ppe/ppe_rows.hpp: the rows of the
 //      one-process assemble_ppe), solved by hypre's BoomerAMG-preconditioned PCG
@@ -20,7 +22,7 @@
 //
 // What this does not do (refused on several ranks by check_distributable): the constrained
 // projection, isph-gpps, projection after each stage, the Pozorski-Wawrenczuk density correction,
-// the exact operator (C&R eq. 18), and the body-force split next to walls (body_force_split.hpp).
+// and the exact operator (C&R eq. 18).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -32,6 +34,7 @@
 #include "distributed_ppe/hypre_poisson.hpp"
 #include "distributed_ppe/ppe_rows.hpp"
 #include "parallel/communicator.hpp"
+#include "projection/body_force_split.hpp"
 #include "projection/projection.hpp"
 
 namespace arksph::distributed {
@@ -62,6 +65,8 @@ class HaloProjection {
   RankParticles& owned_;
   std::int64_t pinned_id_;
   distributed_ppe::HyprePoisson solver_;
+  BodyForceSplit split_;  // the body force's wall flux as Neumann data (body_force_split.hpp)
+  std::vector<double> gx_, gy_, saved_u_, saved_v_;
   bool centre_positions_, difference_divergence_, zero_min_level_;
   double pressure_offset_;
   // Valid while the rank's particles stay (cleared by particles_moved).

@@ -96,6 +96,13 @@ void HaloRhs::build_evaluator() {
   options.periodic_images = false;
   evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),
                                               terms_from_scene(scene_, model_.sound_speed), options);
+  evaluator_->set_slip_origin(slip_on_, slip_t0_);
+}
+
+void HaloRhs::set_slip_origin(bool on, double t0) {
+  slip_on_ = on;
+  slip_t0_ = t0;
+  if (evaluator_) evaluator_->set_slip_origin(on, t0);
 }
 
 std::vector<double> HaloRhs::halo_values(const std::vector<double>& own) const {

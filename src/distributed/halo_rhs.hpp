@@ -54,6 +54,9 @@ class HaloRhs {
   // halo copies of the last eval, in the evaluator's order of the copies (the projection's row
   // numbers and pressures: halo_projection.hpp). One all-to-all along the exchange's send lists.
   std::vector<double> halo_values(const std::vector<double>& own) const;
+  // RhsEvaluator::set_slip_origin, kept for the evaluators of later exchanges (the projection's
+  // body-force split: the stages of a step carry the increment (t - t0) g, halo_projection.hpp).
+  void set_slip_origin(bool on, double t0);
 
  private:
   void exchange();
@@ -74,6 +77,8 @@ class HaloRhs {
   std::vector<double> y_all_, ydot_all_;
   double max_accel_ = 0;
   long exchanges_ = 0;
+  bool slip_on_ = false;
+  double slip_t0_ = 0;
 };
 
 }  // namespace arksph::distributed

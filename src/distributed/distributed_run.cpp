@@ -118,8 +118,6 @@ void check_distributable(const Scene& scene, int ranks) {
 #endif
     if (scene.projection != "cummins_rudman")
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
-    if (scene.projection_points != "step")
-      throw InputError(scene.source + ": method.projection_points = " + scene.projection_points + on);
     if (scene.density_correction != "none")
       throw InputError(scene.source + ": method.density_correction = " + scene.density_correction + on);
     if (scene.ppe_operator != "approximate")
@@ -225,7 +223,11 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };
 #ifdef ARKSPH_WITH_HYPRE
-  if (projection) eo.postprocess = [&projection](double tt, double* yl) { projection->project(tt, yl); };
+  if (projection) {
+    eo.postprocess = [&projection](double tt, double* yl) { projection->project(tt, yl); };
+    if (scene.projection_points == "stages")
+      eo.postprocess_stage = [&projection](double tt, double* yl) { projection->project_stage(tt, yl); };
+  }
 #endif
   // A new integrator at (t, the rank's state) with first step h (0: the stability limit) and the
   // counters of the run so far: at the start, on restart, and after each scheduled checkpoint, so

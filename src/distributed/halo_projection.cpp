@@ -22,6 +22,7 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       pinned_id_(pinned_id),
       solver_(comm, scene.ppe_tolerance),
       split_(scene),
+      slip_origin_(split_.active() && scene.projection_points == "step"),
       centre_positions_(scene.centre_positions),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
@@ -35,7 +36,7 @@ void HaloProjection::particles_moved() {
 
 void HaloProjection::begin_step(double t, const double* y) {
   // The stages of a step projected at its end carry (t - t_n) g (body_force_split.hpp).
-  f_.set_slip_origin(split_.active(), t);
+  f_.set_slip_origin(slip_origin_, t);
   t_prev_ = t;
   y_prev_.assign(y, y + owned_.layout().size());
 }
@@ -44,6 +45,35 @@ void HaloProjection::project(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();
   const double dt = t - t_prev_;
   if (dt <= 0) return;  // the same on every rank (the same steps)
+  project_velocities(dt, t, y);
+  const StateLayout L = owned_.layout();
+  const std::size_t n = L.n;
+  const FluidFields& f = f_.evaluator().fields();
+
+  // 4. Positions centred in time, C&R eq. 12, plus the step's regularisation displacement dt du_s
+  // (du_s of the fields at r*), as in one process.
+  if (centre_positions_ && y_prev_.size() == L.size()) {
+    for (int k = 0; k < L.dim; ++k) {
+      const std::vector<double>& shift = k == 0 ? f.shift_u : f.shift_v;
+      for (std::size_t a = 0; a < n; ++a) {
+        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
+        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
+        if (!shift.empty()) y[L.pos(k) + a] += dt * shift[a];
+      }
+    }
+  }
+  stats_.seconds += since(t0);
+}
+
+void HaloProjection::project_stage(double t, double* y) {
+  const double dt = t - t_prev_;
+  if (dt <= 0) return;  // a stage at c_i = 0 needs no projection
+  const auto t0 = std::chrono::steady_clock::now();
+  project_velocities(dt, t, y);
+  stats_.seconds += since(t0);
+}
+
+void HaloProjection::project_velocities(double dt, double t, double* y) {
   const StateLayout L = owned_.layout();
   const std::size_t n = L.n;
 
@@ -133,20 +163,6 @@ void HaloProjection::project(double t, double* y) {
     u[a] -= dt * gx;
     if (v) v[a] -= dt * gy;
   }
-
-  // 4. Positions centred in time, C&R eq. 12, plus the step's regularisation displacement dt du_s
-  // (du_s of the fields at r*), as in one process.
-  if (centre_positions_ && y_prev_.size() == L.size()) {
-    for (int k = 0; k < L.dim; ++k) {
-      const std::vector<double>& shift = k == 0 ? f.shift_u : f.shift_v;
-      for (std::size_t a = 0; a < n; ++a) {
-        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
-        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
-        if (!shift.empty()) y[L.pos(k) + a] += dt * shift[a];
-      }
-    }
-  }
-  stats_.seconds += since(t0);
 }
 
 }  // namespace arksph::distributed

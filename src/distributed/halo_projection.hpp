@@ -20,9 +20,10 @@
 // is only approximately consistent and the pinned particle shows in the solution at the level of
 // the inconsistency (docs/parallel.md); one process's particle 0 changes with its re-sorts.
 //
+// With method.projection_points = "stages" steps 1-3 also run on every stage (project_stage).
 // What this does not do (refused on several ranks by check_distributable): the constrained
-// projection, isph-gpps, projection after each stage, the Pozorski-Wawrenczuk density correction,
-// and the exact operator (C&R eq. 18).
+// projection, isph-gpps, the Pozorski-Wawrenczuk density correction, and the exact operator
+// (C&R eq. 18).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -48,6 +49,9 @@ class HaloProjection {
   void begin_step(double t, const double* y);
   // Collective. Projects the rank's state y (the end of the step, time t) in place.
   void project(double t, double* y);
+  // Collective. method.projection_points = "stages": projects the velocities of a stage state at
+  // t = t_n + c_i h with dt = c_i h (steps 1-3: no centring), as Projection::project_stage.
+  void project_stage(double t, double* y);
   // The rank's particles changed (migration, a new deal): the rows are numbered anew and the solver
   // starts cold.
   void particles_moved();
@@ -65,7 +69,10 @@ class HaloProjection {
   RankParticles& owned_;
   std::int64_t pinned_id_;
   distributed_ppe::HyprePoisson solver_;
+  void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
+
   BodyForceSplit split_;  // the body force's wall flux as Neumann data (body_force_split.hpp)
+  bool slip_origin_;      // the stages' wall images take the increment (t - t_n) g (not with stages projected)
   std::vector<double> gx_, gy_, saved_u_, saved_v_;
   bool centre_positions_, difference_divergence_, zero_min_level_;
   double pressure_offset_;

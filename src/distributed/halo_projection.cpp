@@ -4,6 +4,8 @@
 #include <chrono>
 #include <limits>
 
+#include "core/errors.hpp"
+#include "distributed/rank_verdict.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph::distributed {
@@ -90,7 +92,16 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
     }
   }
   f_.set_slip_origin(false, 0.0);  // the increment is out of u* above: plain images
-  f_.eval(t, y, nullptr);
+  // A field refresh that fails on one rank (a blown-up neighbour grid) fails on all, with its
+  // message: the others would otherwise wait in the solve's collectives.
+  Verdict refreshed;
+  try {
+    f_.eval(t, y, nullptr);
+  } catch (const NumericalFailure& e) {
+    refreshed = {3, e.what()};
+  }
+  refreshed = agree(comm_, refreshed);
+  if (refreshed.code) throw NumericalFailure(refreshed.message);
   if (split_.active()) {
     std::copy(saved_u_.begin(), saved_u_.end(), u);
     if (v) std::copy(saved_v_.begin(), saved_v_.end(), v);

@@ -17,6 +17,9 @@ against the one-process run, whose KLU solves each PPE exactly (to round-off):
   - a checkpoint at t = 0.1 of a 2-rank run (migrations every 5 steps) restarted on 2 ranks ends
     with every array of the last frame bit for bit that of the uninterrupted 2-rank run (both pin
     the same particle and start the solver cold at the checkpoint);
+  - a run that blows up inside the projection on one rank's particles (a body force of 1e30 in one
+    corner, fixed steps: the step's end positions overflow the neighbour grid of the projection's
+    field refresh) ends every rank with exit 3 and the one-process run's message, within the timeout;
   - what the ranks do not run exits 2 on every rank with one message naming the key: isph-gpps,
     the constrained projection, the Pozorski-Wawrenczuk density correction, the exact operator.
 
@@ -152,6 +155,15 @@ if code_w == 0 and code_p == 0:
         check(same and summary(whole)["steps"] == summary(resumed)["steps"],
               "restart: %s of the restarted run equals the uninterrupted run's bit for bit (arrays %s), "
               "%d steps" % (last, sorted(k for k in a if k in b and list(a[k]) == list(b[k])), summary(resumed)["steps"]))
+
+# A blow-up seen first by the projection's field refresh, on the ranks that own the corner.
+corner = ["--set", 'fluid.body_force=["t > 0.01 ? (x > 0.8 ? (y > 0.8 ? 1e30 : 0) : 0) : 0", "0"]',
+          "--set", "time.dt=0.001", "--set", "time.end=0.05"]
+for ranks in (1, 2, 3):
+    out, code, err = run("blow-up-%d" % ranks, ranks, spin + corner)
+    msg = [l for l in err.splitlines() if l.startswith("arksph:")]
+    check(code == 3 and any("neighbour cells" in l and "blown up" in l for l in msg),
+          "a blow-up in the projection on %d rank(s): exit %s, %s" % (ranks, code, msg[-1][:100] if msg else ""))
 
 refused = [("scheme isph-gpps", ["--set", "method.scheme=isph-gpps"], "isph-gpps"),
            ("method.projection = constrained", ["--set", "method.projection=constrained"], "method.projection"),

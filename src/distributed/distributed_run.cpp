@@ -269,9 +269,14 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   const auto write_frame = [&](double at, const ErkStats& st) {
     if (pieces) {
       f.eval(at, integrator->state(), nullptr);
+      std::vector<double> pressure;  // isph: the last projection's, as a whole frame carries it
+#ifdef ARKSPH_WITH_HYPRE
+      if (projection && projection->stats().solves > 0) pressure = projection->pressure_at(mine.ids());
+#endif
       const int number = static_cast<int>(comm.max(static_cast<std::int64_t>(root ? out->frames() : 0)));
       together(comm, [&] {
-        write_rank_piece(scene.directory + "/" + piece_file_name(number, comm.rank()), at, f, mine, grid.domain());
+        write_rank_piece(scene.directory + "/" + piece_file_name(number, comm.rank()), at, f, mine, grid.domain(),
+                         pressure.empty() ? nullptr : pressure.data());
       });
     }
 #ifdef ARKSPH_WITH_HYPRE

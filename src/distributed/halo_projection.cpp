@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <unordered_map>
 
 #include "core/errors.hpp"
 #include "distributed/rank_verdict.hpp"
@@ -29,6 +30,23 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {}
+
+std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>& ids) const {
+  struct IdValue {
+    std::int64_t id;
+    double p;
+  };
+  std::vector<IdValue> mine(pressure_.size());
+  for (std::size_t a = 0; a < pressure_.size(); ++a) mine[a] = {pressure_ids_[a], pressure_[a]};
+  const std::vector<IdValue> all = comm_.allgatherv(mine);
+  std::unordered_map<std::int64_t, double> p;
+  p.reserve(all.size());
+  for (const IdValue& r : all) p[r.id] = r.p;
+  std::vector<double> out(ids.size(), 0.0);
+  for (std::size_t a = 0; a < ids.size(); ++a)
+    if (const auto it = p.find(ids[a]); it != p.end()) out[a] = it->second;
+  return out;
+}
 
 void HaloProjection::particles_moved() {
   numbered_ = false;

@@ -61,6 +61,9 @@ class HaloProjection {
   // The pressure of the last projection and the ids of its particles (this rank's, at that time).
   const std::vector<double>& pressure() const { return pressure_; }
   const std::vector<std::int64_t>& pressure_ids() const { return pressure_ids_; }
+  // Collective. The last projection's pressure of the particles `ids` (this rank's now, which may
+  // have migrated since that projection): one all-gather of every rank's (id, P) (output.pieces).
+  std::vector<double> pressure_at(const std::vector<std::int64_t>& ids) const;
   static std::string solver_name() { return "hypre-pcg-boomeramg"; }
 
  private:

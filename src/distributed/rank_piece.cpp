@@ -9,7 +9,7 @@
 namespace arksph::distributed {
 
 void write_rank_piece(const std::string& path, double t, const HaloRhs& f, const RankParticles& mine,
-                      const parallel::Domain& domain) {
+                      const parallel::Domain& domain, const double* pressure) {
   const FluidFields& ff = f.evaluator().fields();
   const std::size_t n = mine.size();
   const int dim = mine.index().dim;
@@ -33,7 +33,7 @@ void write_rank_piece(const std::string& path, double t, const HaloRhs& f, const
   fr.y = dim == 2 ? y.data() : nullptr;
   fr.u = ff.u.data();
   fr.v = dim == 2 ? ff.v.data() : nullptr;
-  fr.pressure = ff.p.data();
+  fr.pressure = pressure ? pressure : ff.p.data();
   fr.density = ff.rho.data();
   fr.summation_density = rho_sum.data();
   fr.mass = ff.m.data();

@@ -12,8 +12,9 @@ namespace arksph::distributed {
 
 // Writes the rank's particles at the last evaluation of f (f.eval at the frame's state first) to
 // `path`; positions wrapped into the box along the periodic axes, as one process writes them.
-// Throws OutputError.
+// `pressure`: the rank's particles' pressure when not the fields' (the projection's under isph, as a
+// whole frame carries it), or null. Throws OutputError.
 void write_rank_piece(const std::string& path, double t, const HaloRhs& f, const RankParticles& mine,
-                      const parallel::Domain& domain);
+                      const parallel::Domain& domain, const double* pressure = nullptr);
 
 }  // namespace arksph::distributed

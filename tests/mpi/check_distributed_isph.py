@@ -17,6 +17,9 @@ against the one-process run, whose KLU solves each PPE exactly (to round-off):
   - a checkpoint at t = 0.1 of a 2-rank run (migrations every 5 steps) restarted on 2 ranks ends
     with every array of the last frame bit for bit that of the uninterrupted 2-rank run (both pin
     the same particle and start the solver cold at the checkpoint);
+  - with output.pieces = true (2 ranks, migrations every 5 steps) each rank's pieces carry the
+    projection's pressure: the last frame's, by particle id, bit for bit that of the gathered frame
+    of the same run without pieces;
   - a run that blows up inside the projection on one rank's particles (a body force of 1e30 in one
     corner, fixed steps: the step's end positions overflow the neighbour grid of the projection's
     field refresh) ends every rank with exit 3 and the one-process run's message, within the timeout;
@@ -134,6 +137,23 @@ compare("vortex", vortex)
 compare("tank", [os.path.join(source, "cases/hydrostatic_tank/scene.toml"), "--set", "time.end=0.02",
                 "--set", "output.every=0.02"] + tol, speed=0.02)  # g t = 1 x 0.02
 compare("spin_down_loose", spin, ranks_args=["--set", "method.ppe_tolerance=1e-5"], within=False, ranks_list=(2,))
+
+# output.pieces: the projection's pressure in each rank's piece, against the gathered frame of the
+# same run (spin_down_migrating on 2 ranks, above).
+pieces, code, _ = run("pieces-2", 2, spin + ["--set", "method.reorder_every=5", "--set", "output.pieces=true"])
+check(code == 0, "pieces: 2 ranks with output.pieces exit 0")
+gathered = os.path.join(work, "spin_down_migrating-2")
+if code == 0 and os.path.isdir(gathered):
+    whole = pressures(gathered)
+    last = os.path.basename(sorted(glob.glob(os.path.join(gathered, "particles_*.vtp")))[-1])[:-4]
+    pieced = {}
+    for f in sorted(glob.glob(os.path.join(pieces, last + "_r*.vtp"))):
+        a = read_arrays(f)
+        pieced.update({i: a["pressure"][k] for k, i in enumerate(a["id"])})
+    check(sorted(pieced) == sorted(whole) and all(pieced[i] == whole[i] for i in whole)
+          and max(abs(p) for p in whole.values()) > 0,
+          "pieces: the pressure of %s's pieces equals the gathered frame's by id (%d particles)"
+          % (last, len(pieced)))
 
 # Restart on the same rank count: bit for bit (docs/parallel.md, "Checkpoints and restart").
 every = ["--set", "output.checkpoint_every=0.1", "--set", "method.reorder_every=5"]

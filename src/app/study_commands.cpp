@@ -19,7 +19,8 @@ namespace {
 const char* kBatchUsage =
     "usage: arksph batch SWEEP.toml [--jobs N] [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
     "  Runs the Cartesian product of the sweep's [[vary]] lists over its base scene, N runs at a time, each\n"
-    "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped.\n"
+    "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped;\n"
+    "  a run stopped before its end (signal, lost session) continues from its checkpoint.h5, if it wrote one.\n"
     "  --set adds an override to every run (after the sweep's own set list); a varied key is refused (exit 2).\n"
     "  Results: <out>/batch.csv and <out>/batch.json. Exit 0 if every run finished ok, 3 otherwise,\n"
     "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n"

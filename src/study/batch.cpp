@@ -38,6 +38,16 @@ std::vector<std::string> child_args(const Sweep& sw, const SweepRun& run, const 
   return a;
 }
 
+// The command that continues a stopped run from the checkpoint in its folder. The checkpoint holds
+// the run's resolved scene; its --set values are given again so that the keys a restart may change
+// (the end time among them) are the run's whatever the checkpoint says.
+std::vector<std::string> resume_args(const SweepRun& run, const std::string& dir) {
+  std::vector<std::string> a = {"arksph", "run", "--restart", (fs::path(dir) / "checkpoint.h5").string(),
+                                "--out", dir, "--quiet"};
+  for (const auto& s : run.sets) a.insert(a.end(), {"--set", s});
+  return a;
+}
+
 std::string joined(const std::vector<std::string>& args) {
   std::string s;
   for (const auto& a : args) s += a + "\n";
@@ -73,8 +83,9 @@ bool read_summary(BatchRunResult& r) {
   }
 }
 
-// Starts one child with stdout and stderr into DIR/run.log.
-pid_t launch(const std::string& exe, const std::vector<std::string>& args, const std::string& dir) {
+// Starts one child with stdout and stderr into DIR/run.log (appended to when `append`: the log of a
+// resumed run keeps what the run wrote before it stopped).
+pid_t launch(const std::string& exe, const std::vector<std::string>& args, const std::string& dir, bool append) {
   const std::string log = (fs::path(dir) / "run.log").string();
   std::vector<char*> argv;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -82,7 +93,7 @@ pid_t launch(const std::string& exe, const std::vector<std::string>& args, const
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | (append ? O_APPEND : O_TRUNC), 0644);
     if (fd >= 0) {
       dup2(fd, STDOUT_FILENO);
       dup2(fd, STDERR_FILENO);
@@ -157,10 +168,17 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     r.values = sw.runs[i].values;
     if (!mine(i)) continue;  // another rank's run
     const std::string cmd = joined(child_args(sw, sw.runs[i], r.dir));
-    if (slurp(fs::path(r.dir) / "batch_run.txt") == cmd && read_summary(r) && r.status == "ok") {
+    const bool same_run = slurp(fs::path(r.dir) / "batch_run.txt") == cmd;
+    const bool summary = same_run && read_summary(r);
+    if (summary && r.status == "ok") {
       r.skipped = true;
       ++res.skipped;
     } else {
+      // The same run stopped by a signal (status "interrupted") or killed before it could write its
+      // summary, with a checkpoint in its folder, continues from that checkpoint. A run that
+      // failed runs again from the start.
+      const bool stopped = !summary || r.status == "interrupted";
+      r.resumed = same_run && stopped && fs::exists(fs::path(r.dir) / "checkpoint.h5");
       todo.push_back(i);
     }
   }
@@ -180,8 +198,12 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
       fs::create_directories(r.dir);
       fs::remove(fs::path(r.dir) / "summary.json", ec);  // a stale summary must not pass for this run's
       const auto args = child_args(sw, sw.runs[i], r.dir);
-      std::ofstream(fs::path(r.dir) / "batch_run.txt") << joined(args);
-      running[launch(exe, args, r.dir)] = i;
+      if (r.resumed) {
+        running[launch(exe, resume_args(sw.runs[i], r.dir), r.dir, true)] = i;
+      } else {
+        std::ofstream(fs::path(r.dir) / "batch_run.txt") << joined(args);  // the run's identity
+        running[launch(exe, args, r.dir, false)] = i;
+      }
     }
     if (running.empty()) break;  // interrupted before launching the rest
     int wstatus = 0;
@@ -201,8 +223,9 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     if (r.status != "ok") ++res.failed;
     ++done;
     if (!opt.quiet)
-      std::fprintf(stderr, "batch%s: [%zu/%zu] %-50s %-9s %6.2f s  (failed %d, running %zu)\n", rank_tag(ranks).c_str(),
-                   done, total, r.name.c_str(), r.status.c_str(), r.wall_seconds, res.failed, running.size());
+      std::fprintf(stderr, "batch%s: [%zu/%zu] %-50s %-9s %6.2f s%s  (failed %d, running %zu)\n", rank_tag(ranks).c_str(),
+                   done, total, r.name.c_str(), r.status.c_str(), r.wall_seconds, r.resumed ? " (resumed)" : "",
+                   res.failed, running.size());
   }
   for (std::size_t k = next; k < todo.size(); ++k) {  // never launched (interrupt)
     res.runs[todo[k]].status = "not_run";

@@ -3,7 +3,8 @@
 // `jobs` at a time, so that a crashing run cannot take the batch down. Each run writes its own
 // folder <output>/<run name>/ (the run's files, run.log with its stdout and stderr, batch_run.txt
 // with its command line). Runs whose folder already holds a summary.json with status "ok" for the
-// same command line are skipped (resume). The results are combined into <output>/batch.csv and
+// same command line are skipped (resume); a run of the same command line that stopped before its end
+// with a checkpoint.h5 in its folder continues from it (`arksph run --restart`). The results are combined into <output>/batch.csv and
 // <output>/batch.json: each run's --set values, status, exit code, wall time, steps and its
 // summary.json metrics. One progress line per finished run on stderr. The batch locks its folder
 // like a run does (run/output_folder.hpp): a second batch into the same folder exits 2.
@@ -35,6 +36,7 @@ struct BatchRunResult {
   double wall_seconds = 0;
   long steps = 0, rhs_evals = 0;
   std::vector<std::pair<std::string, std::string>> metrics;  // name, number as written
+  bool resumed = false;             // continued from the checkpoint.h5 of an earlier, stopped launch
 };
 
 struct BatchResult {

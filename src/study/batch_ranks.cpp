@@ -64,14 +64,14 @@ std::vector<std::string> split(const std::string& line, char sep) {
   return f;
 }
 
-// The rows of one rank: index, status, exit code, skipped, wall time, steps, rhs evaluations, then
+// The rows of one rank: index, status, exit code, skipped, wall time, steps, rhs evaluations, resumed, then
 // metric name and value pairs; tab-separated (no field of a row holds a tab or a newline).
 std::string encode(const BatchRunResult& r, std::size_t index) {
   char wall[32];
   std::snprintf(wall, sizeof wall, "%.17g", r.wall_seconds);
   std::ostringstream s;
   s << index << '\t' << r.status << '\t' << r.exit_code << '\t' << (r.skipped ? 1 : 0) << '\t' << wall << '\t' << r.steps
-    << '\t' << r.rhs_evals;
+    << '\t' << r.rhs_evals << '\t' << (r.resumed ? 1 : 0);
   for (const auto& [k, v] : r.metrics) s << '\t' << k << '\t' << v;
   return s.str();
 }
@@ -79,7 +79,7 @@ std::string encode(const BatchRunResult& r, std::size_t index) {
 // False for a malformed row.
 bool decode(const std::string& line, BatchResult& res) {
   const auto f = split(line, '\t');
-  if (f.size() < 7 || (f.size() - 7) % 2) return false;
+  if (f.size() < 8 || (f.size() - 8) % 2) return false;
   try {
     const std::size_t i = std::stoul(f[0]);
     if (i >= res.runs.size()) return false;
@@ -90,8 +90,9 @@ bool decode(const std::string& line, BatchResult& res) {
     r.wall_seconds = std::stod(f[4]);
     r.steps = std::stol(f[5]);
     r.rhs_evals = std::stol(f[6]);
+    r.resumed = f[7] == "1";
     r.metrics.clear();
-    for (std::size_t k = 7; k + 1 < f.size(); k += 2) r.metrics.emplace_back(f[k], f[k + 1]);
+    for (std::size_t k = 8; k + 1 < f.size(); k += 2) r.metrics.emplace_back(f[k], f[k + 1]);
     return true;
   } catch (const std::exception&) {
     return false;

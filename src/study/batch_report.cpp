@@ -34,14 +34,14 @@ void write_batch_csv(const Sweep& sw, const BatchResult& res, const std::string&
   const auto names = metric_names(res);
   f << "run";
   for (const auto& key : sw.columns) f << "," << csv_field(key);
-  f << ",status,exit_code,skipped,wall_seconds,steps,rhs_evals";
+  f << ",status,exit_code,skipped,wall_seconds,steps,rhs_evals,resumed";
   for (const auto& n : names) f << "," << csv_field(n);
   f << "\n";
   for (const auto& r : res.runs) {
     f << csv_field(r.name);
     for (const auto& v : r.values) f << "," << csv_field(v);
     f << "," << r.status << "," << r.exit_code << "," << (r.skipped ? 1 : 0) << "," << r.wall_seconds << "," << r.steps
-      << "," << r.rhs_evals;
+      << "," << r.rhs_evals << "," << (r.resumed ? 1 : 0);
     for (const auto& n : names) {
       std::string value;
       for (const auto& [k, v] : r.metrics)
@@ -71,6 +71,7 @@ void write_batch_json(const Sweep& sw, const BatchResult& res, const std::string
     o.set("set", set);
     o.set("status", r.status).set("exit_code", r.exit_code).set("skipped", r.skipped);
     o.set("wall_seconds", r.wall_seconds).set("steps", r.steps).set("rhs_evals", r.rhs_evals);
+    o.set("resumed", r.resumed);
     Json m = Json::object();
     for (const auto& [k, v] : r.metrics) m.set(k, std::strtod(v.c_str(), nullptr));
     o.set("metrics", m);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "io/checkpoint.hpp"
 #include "io/json_reader.hpp"
 #include "study/batch.hpp"
 #include "study/sweep.hpp"
@@ -137,4 +138,58 @@ TEST_CASE("batch: a crashing run is recorded and does not stop the batch") {
   CHECK(res.runs[1].status == "ok");
   CHECK(res.failed == 1);
   CHECK(testing::slurp(scratch / "out/batch.csv").find(",crashed,139,") != std::string::npos);
+}
+
+// A run that stopped before its end (here a stand-in executable: the run goes to t = 0.05 of 0.1,
+// writes its checkpoint there, loses its summary.json and is killed, as in a lost session) is
+// continued from its checkpoint by the next invocation, and ends bit-identical to a batch that was
+// never stopped: t = 0.05 is a scheduled checkpoint of the sweep's runs, and a restart from a
+// scheduled checkpoint repeats the uninterrupted run bit for bit (docs/user-guide.md, "Checkpoints
+// and restart"). A run that starts
+// anew would also end equal, so the checkpoint time and the `resumed` column tell the two apart.
+TEST_CASE("batch: a run stopped before its end continues from its checkpoint") {
+  testing::ScratchDir scratch("batch_resume");
+  const std::string fake = scratch / "stopping_arksph.sh";
+  std::ofstream(fake) << "#!/bin/sh\n"
+                      << "case \"$*\" in *--restart*) exec " << ARKSPH_BINARY << " \"$@\" ;; esac\n"
+                      << "prev=; for a in \"$@\"; do [ \"$prev\" = --out ] && out=$a; prev=$a; done\n"
+                      << ARKSPH_BINARY << " \"$@\" --set time.end=0.05\n"
+                      << "rm -f \"$out/summary.json\"\n"
+                      << "kill -KILL $$\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const Sweep sw = read_sweep_text(sweep_text("set = [\"time.end=0.1\", \"output.every=0.025\", \"output.checkpoint_every=0.05\"]\n[[vary]]\n"
+                                              "key = \"method.kernel\"\nvalues = [\"wendland_quintic\"]\n"),
+                                   kSweepDir + "/resume.toml");
+  BatchOptions opt;
+  opt.output = scratch / "stopped";
+  opt.quiet = true;
+  opt.executable = fake;
+  const BatchResult first = run_batch(sw, opt);
+  REQUIRE(first.runs.size() == 1);
+  CHECK(first.runs[0].status == "crashed");
+  const std::string dir = first.runs[0].dir;
+  CHECK(read_checkpoint(dir + "/checkpoint.h5").time == 0.05);
+
+  opt.executable = ARKSPH_BINARY;
+  const BatchResult second = run_batch(sw, opt);
+  CHECK(second.runs[0].status == "ok");
+  CHECK(second.runs[0].resumed);
+  CHECK_FALSE(second.runs[0].skipped);
+  const auto rows = testing::read_csv(opt.output + "/batch.csv");
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[1][column(rows[0], "resumed")] == "1");
+
+  opt.output = scratch / "uninterrupted";
+  const BatchResult whole = run_batch(sw, opt);
+  REQUIRE(whole.runs[0].status == "ok");
+  CHECK_FALSE(whole.runs[0].resumed);
+  const Checkpoint a = read_checkpoint(dir + "/checkpoint.h5"), b = read_checkpoint(whole.runs[0].dir + "/checkpoint.h5");
+  CHECK(a.time == 0.1);
+  CHECK(a.steps == b.steps);
+  CHECK(a.state == b.state);  // bit for bit
+  CHECK(testing::slurp(dir + "/timeseries.csv") == testing::slurp(whole.runs[0].dir + "/timeseries.csv"));
+
+  // A third invocation finds the resumed run finished.
+  opt.output = scratch / "stopped";
+  CHECK(run_batch(sw, opt).runs[0].skipped);
 }

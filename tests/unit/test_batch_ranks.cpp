@@ -85,7 +85,7 @@ TEST_CASE("batch ranks: the rows of a rank > 0 reach rank 0 field for field") {
 
   BatchResult theirs;
   theirs.runs.resize(4);
-  theirs.runs[1] = {"1_a", "", {"x"}, "failed", 3, false, 0.125, 17, 35, {{"kinetic_energy", "0.24616027516505956"}, {"l2", "nan"}}};
+  theirs.runs[1] = {"1_a", "", {"x"}, "failed", 3, false, 0.125, 17, 35, {{"kinetic_energy", "0.24616027516505956"}, {"l2", "nan"}}, true};
   theirs.runs[3] = {"3_b", "", {"y"}, "ok", 0, true, 2.5, 4, 9, {{"kinetic_energy", "1e-300"}}};
   write_rank_rows(folder, r1, theirs);
 
@@ -101,6 +101,7 @@ TEST_CASE("batch ranks: the rows of a rank > 0 reach rank 0 field for field") {
     CHECK(a.status == b.status);
     CHECK(a.exit_code == b.exit_code);
     CHECK(a.skipped == b.skipped);
+    CHECK(a.resumed == b.resumed);
     CHECK(a.wall_seconds == b.wall_seconds);
     CHECK(a.steps == b.steps);
     CHECK(a.rhs_evals == b.rhs_evals);

@@ -36,10 +36,9 @@ CoarsePressureSpace::CoarsePressureSpace(const Scene& scene, double ratio) {
     a.length = scene.max[k] - scene.min[k];
     const int m = std::max(1, static_cast<int>(std::lround(a.length / (ratio * scene.spacing))));
     a.spacing = a.length / m;
-    a.first = a.periodic ? 0 : -1;
-    a.nodes = a.periodic ? m : m + 3;
-    if (a.periodic && m < 4)
-      throw InputError("method.orthogonal_spacing: a periodic side needs at least 4 pressure nodes (got " +
+    a.nodes = a.periodic ? m : m + 1;
+    if (m < 4)
+      throw InputError("method.orthogonal_spacing: at least 4 pressure node spacings across the box are needed (got " +
                        std::to_string(m) + ")");
     nodes_ *= static_cast<std::size_t>(a.nodes);
   }
@@ -50,18 +49,29 @@ void CoarsePressureSpace::stencil(const Axis& a, double x, int* node, double* w,
   const double s = (x - a.origin) / a.spacing;  // in node units from the origin
   const int base = static_cast<int>(std::floor(s)) - 1;
   for (int i = 0; i < 4; ++i) {
-    int j = base + i;  // node index along the axis, counted from the origin
+    const int j = base + i;  // node index along the axis, counted from the origin
     const double t = s - j;
     w[i] = bspline(t);
     dw[i] = bspline_slope(t) / a.spacing;
-    if (a.periodic) {
-      j %= a.nodes;
-      if (j < 0) j += a.nodes;
-      node[i] = j;
-    } else {
-      node[i] = j - a.first;  // a particle within the walls reaches nodes 0 .. m + 2
-      if (node[i] < 0 || node[i] >= a.nodes) w[i] = dw[i] = 0, node[i] = 0;
+    node[i] = a.periodic ? ((j % a.nodes) + a.nodes) % a.nodes : j;
+  }
+  if (a.periodic) return;
+  // Walls: the B-splines of the nodes one spacing outside (j = -1, j = m) are folded into the two
+  // nodes next to them by linear extrapolation, q_-1 = 2 q_0 - q_1 (and at the far wall alike), so
+  // that the basis still reproduces linear pressures and no node is seen by only a sliver of
+  // particles (such nodes left K_c with eigenvalues 1e-8 of its largest and made f jump).
+  const int last = a.nodes - 1;
+  for (int i = 0; i < 4; ++i) {
+    int inner = -1, next = -1;
+    if (node[i] < 0) inner = 0, next = 1;
+    if (node[i] > last) inner = last, next = last - 1;
+    if (inner < 0) continue;
+    for (int k = 0; k < 4; ++k) {
+      if (node[k] == inner) w[k] += 2 * w[i], dw[k] += 2 * dw[i];
+      if (node[k] == next) w[k] -= w[i], dw[k] -= dw[i];
     }
+    w[i] = dw[i] = 0;
+    node[i] = inner;
   }
 }
 
@@ -82,7 +92,7 @@ void CoarsePressureSpace::assemble(const FluidFields& f, const DivergenceOperato
       for (int j = 0; j < 4; ++j) {
         const std::size_t e = 16 * a + static_cast<std::size_t>(4 * i + j);
         const long node = static_cast<long>(ny[j]) * axis_[0].nodes + nx[i] - 1;  // -1: the pinned node 0
-        if (node < 0 || bx[i] * by[j] == 0) continue;
+        if (node < 0 || (bx[i] * by[j] == 0 && dbx[i] * by[j] == 0 && bx[i] * dby[j] == 0)) continue;
         col_[e] = static_cast<std::int32_t>(node);
         w_[e] = bx[i] * by[j];
         wx_[e] = dbx[i] * by[j];

@@ -14,9 +14,9 @@
 // 24 x 24 Taylor-Green field, lattice shaken by 0.2 dx, Wendland h = 2 dx: |P u - u| / |u| = 0.061
 // on particles, 0.015 with H = 2 dx, 0.0043 with H = 3 dx, 0.0026 with H = 4 dx.
 //
-// Grid: each periodic axis has m = round(L / (ratio dx)) nodes, wrapped; each axis with walls has
-// m + 3 nodes from one spacing outside the wall to one beyond the other, so that every particle has
-// its whole 4 x 4 stencil. The first node is held at q = 0: it removes the constant, which on a
+// Grid: m = round(L / (ratio dx)) spacings across the box (at least 4). A periodic axis has m nodes,
+// wrapped; an axis with walls has the m + 1 nodes from wall to wall, the B-splines of the nodes
+// outside folded into their neighbours by linear extrapolation (stencil). The first node is held at q = 0: it removes the constant, which on a
 // periodic lattice is in the null space of K_c, and leaves K_c positive definite (one constraint,
 // the total volume flux, is given up). K_c is small (N / ratio^2 nodes) and factorised densely
 // (Eigen LDLT) at every evaluation.
@@ -51,7 +51,7 @@ class CoarsePressureSpace {
   struct Axis {
     bool periodic = false;
     double origin = 0, spacing = 1, length = 1;
-    int nodes = 0, first = 0;  // node i sits at origin + (first + i) spacing
+    int nodes = 0;  // node i sits at origin + i spacing
   };
   // The 4 nodes of axis `a` around coordinate x with their B-spline values and derivatives.
   void stencil(const Axis& a, double x, int* node, double* w, double* dw) const;

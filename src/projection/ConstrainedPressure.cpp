@@ -29,7 +29,8 @@ double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
 }
 
 double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
-  return scene.constraint_relaxation * flow_rate(scene, rhs);
+  const double beta = scene.projection == "orthogonal" ? scene.orthogonal_relaxation : scene.constraint_relaxation;
+  return beta * flow_rate(scene, rhs);
 }
 
 ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)

@@ -68,7 +68,8 @@ namespace arksph {
 
 // U / h, U the largest initial or wall speed (h / time.end for a fluid at rest between still walls).
 double flow_rate(const Scene& scene, const RhsEvaluator& rhs);
-// alpha = method.constraint_relaxation x U / h.
+// alpha = beta U / h, beta = method.constraint_relaxation (method.orthogonal_relaxation for the
+// orthogonal projection).
 double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs);
 
 struct ConstraintReport {

@@ -50,6 +50,9 @@ const std::vector<Param>& projection_params() {
       number("method.orthogonal_spacing", 3.0).in(at_least(1))
           .doc("orthogonal projection: spacing of the pressure's B-spline nodes over fluid.spacing (coarser: fewer constraints, better conditioned)")
           .to(&Scene::orthogonal_spacing),
+      number("method.orthogonal_relaxation", 0.1).in(at_least(0))
+          .doc("orthogonal projection: beta of its relaxation rate alpha = beta U/h (as method.constraint_relaxation; smaller, because the coarse divergence of a smooth flow on disordered particles is not zero, and relaxing it damps the flow)")
+          .to(&Scene::orthogonal_relaxation),
       number("method.constraint_relaxation", 1.0).in(at_least(0))
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
           .to(&Scene::constraint_relaxation),

@@ -75,7 +75,10 @@ struct Scene {
   std::string density_correction = "none";
   std::string regularisation = "none";     // particle regularisation in dr/dt (rhs/term_registry.hpp)
   std::string density_diffusion = "none";  // delta-SPH in the continuity equation (wcsph)
-  std::string projection = "cummins_rudman";  // isph: "cummins_rudman" (after each step) | "constrained" (pressure in f)
+  std::string projection = "cummins_rudman";  // isph: "cummins_rudman" (after each step) | "constrained" | "orthogonal" (pressure in f)
+  double orthogonal_spacing = 3.0;            // orthogonal projection: pressure node spacing / fluid.spacing
+  double orthogonal_relaxation = 0.1;         // orthogonal projection: beta of its relaxation rate
+  bool pressure_in_f() const { return projection == "constrained" || projection == "orthogonal"; }
   double constraint_relaxation = 1.0;  // constrained projection: alpha = this x U/h, the decay rate of D u
   std::string ppe_operator = "approximate";  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_divergence = "cummins_rudman";  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"

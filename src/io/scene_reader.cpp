@@ -296,25 +296,28 @@ void resolve_automatic(Scene& s, const std::vector<const CatalogKey*>& automatic
 
 void check_method(const Section& m, Scene& s) {
   // What the constrained projection (pressure inside f) does not combine with: one line naming both keys.
-  if (s.projection == "constrained") {
+  if (s.pressure_in_f()) {
+    const std::string value = "\"" + s.projection + "\"";
     if (scheme_traits(s.scheme).grid)
-      m.fail("projection", "\"constrained\" needs the particle Poisson equation: method.scheme = \"isph\" (got \"" +
+      m.fail("projection", value + " needs the particle Poisson equation: method.scheme = \"isph\" (got \"" +
                                s.scheme + "\")");
     if (s.projection_points != "step")
-      m.fail("projection", "\"constrained\" projects inside f: method.projection_points = \"" + s.projection_points +
+      m.fail("projection", value + " projects inside f: method.projection_points = \"" + s.projection_points +
                                "\" does not apply");
     if (s.ppe_operator != "approximate")
-      m.fail("projection", "\"constrained\" builds its own operator: method.ppe_operator = \"" + s.ppe_operator +
+      m.fail("projection", value + " builds its own operator: method.ppe_operator = \"" + s.ppe_operator +
                                "\" does not apply");
   }
+  if (s.projection == "orthogonal" && s.dimension != 2)
+    m.fail("projection", "\"orthogonal\" needs a 2D scene (scene.dimension = " + std::to_string(s.dimension) + ")");
   if (s.ppe_operator == "exact" && s.ppe_solver == "auto") s.ppe_solver = "klu";  // the only one for it
   if (s.ppe_operator == "exact" && s.ppe_solver != "klu")
     m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
 }
 
 void check_time_output(const std::map<std::string, Section>& sections, Scene& s) {
-  if (s.imex && !scheme_traits(s.scheme).weakly_compressible && s.projection != "constrained")
-    sections.at("time").fail("imex", "needs method.scheme = \"wcsph\", or \"isph\" with method.projection = \"constrained\" (got scheme \"" +
+  if (s.imex && !scheme_traits(s.scheme).weakly_compressible && !s.pressure_in_f())
+    sections.at("time").fail("imex", "needs method.scheme = \"wcsph\", or \"isph\" with method.projection = \"constrained\" or \"orthogonal\" (got scheme \"" +
                                          s.scheme + "\", projection \"" + s.projection + "\")");
   const Section& o = sections.at("output");
   if (!o.has("directory")) s.directory = "runs/" + s.name;

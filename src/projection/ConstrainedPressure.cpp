@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/errors.hpp"
 #include "core/particle_order.hpp"
 #include "projection/divergence_operator.hpp"
 
@@ -28,7 +29,8 @@ double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
 }
 
 double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
-  return scene.constraint_relaxation * flow_rate(scene, rhs);
+  const double beta = scene.projection == "orthogonal" ? scene.orthogonal_relaxation : scene.constraint_relaxation;
+  return beta * flow_rate(scene, rhs);
 }
 
 ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
@@ -41,6 +43,47 @@ ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
       solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)) {
   if (scene.density_correction == "pozorski_wawrenczuk")
     density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate(scene, rhs));
+  if (scene.projection == "orthogonal") {
+    if (split_.active())
+      throw InputError(scene.source + ": method.projection = \"orthogonal\" does not take fluid.body_force with walls yet "
+                       "(the wall flux of the body force is not on its pressure space): use \"constrained\"");
+    coarse_ = std::make_unique<CoarsePressureSpace>(scene, scene.orthogonal_spacing);
+  }
+}
+
+void ConstrainedPressure::coarse_pressure(const double* u, const double* v) {
+  const FluidFields& f = rhs_.fields();
+  const std::size_t n = f.n_real;
+  coarse_->assemble(f, operator_);  // operator_ assembled by the caller at these fields
+  Eigen::VectorXd c = coarse_->restrict_weighted(f, div_.data());
+  if (u) {
+    udiv_.resize(n);
+    operator_.divergence(u, v, udiv_.data());
+    c += coarse_->motion_rate(f, u, v, udiv_.data());
+  }
+  coarse_->pressure(c, p_);
+  gx_.resize(n);
+  gy_.resize(n);
+  operator_.gradient(p_.data(), gx_.data(), gy_.data());
+  // The level of p does not enter its gradient's role here (G is the adjoint of D, whose image of
+  // a constant is the disorder's small flux): the reported pressure takes the scene's level.
+  const double level = zero_min_level_ ? *std::min_element(p_.begin(), p_.end())
+                                       : std::accumulate(p_.begin(), p_.end(), 0.0) / static_cast<double>(n);
+  for (double& x : p_) x -= level;
+}
+
+void ConstrainedPressure::project_orthogonal(double* u, double* v) {
+  const std::size_t n = rhs_.fields().n_real;
+  div_.resize(n);
+  operator_.assemble(rhs_.fields());
+  operator_.divergence(u, v, div_.data());
+  const std::vector<double> keep = p_;
+  coarse_pressure(nullptr, nullptr);
+  for (std::size_t a = 0; a < n; ++a) {
+    u[a] -= gx_[a];
+    v[a] -= gy_[a];
+  }
+  p_ = keep;
 }
 
 void ConstrainedPressure::forget_warm_start() {
@@ -109,13 +152,30 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
     }
   }
   div_.resize(n);
-  divergence_minus_motion(f, wx_.data(), wy_.data(), u, v, div_.data());
+  if (coarse_) {
+    // D(w - (u . grad) u): the motion term as the divergence of the convective acceleration, with
+    // the same D as the constraint (coarse_pressure_space.hpp says why).
+    convective_acceleration(f, u, v, cx_, cy_);
+    for (std::size_t a = 0; a < n; ++a) {
+      wx_[a] -= cx_[a];
+      wy_[a] -= cy_[a];
+    }
+    difference_divergence(f, wx_.data(), wy_.data(), div_.data());
+  } else {
+    divergence_minus_motion(f, wx_.data(), wy_.data(), u, v, div_.data());
+  }
   if (split_.active()) {
     const std::vector<double> dg = split_.divergence(f), flux = neumann_source(f);
     for (std::size_t a = 0; a < n; ++a) div_[a] += dg[a] + flux[a];
   }
-  const ConstraintReport rep = solve_pressure(div_);
-  pressure_gradient(p_, true);
+  ConstraintReport rep;
+  if (coarse_) {
+    operator_.assemble(f);
+    coarse_pressure(u, v);
+  } else {
+    rep = solve_pressure(div_);
+    pressure_gradient(p_, true);
+  }
   for (std::size_t a = 0; a < n; ++a) {
     ydot[L.vel(0) + a] -= gx_[a];
     if (v) ydot[L.vel(1) + a] -= gy_[a];
@@ -130,6 +190,10 @@ ConstraintReport ConstrainedPressure::project_velocity(double t, double* y) {
   const std::size_t n = L.n;
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
+  if (coarse_) {
+    project_orthogonal(u, v);
+    return {};
+  }
   div_.resize(n);
   difference_divergence(rhs_.fields(), u, v, div_.data());
   const std::vector<double> keep_p = p_, keep_solution = solution_;

@@ -37,12 +37,28 @@
 // The exact orthogonal projection I - G (D G)^-1 D with G = -M^-1 D^T V (DivergenceOperator) is
 // idempotent, but D G decouples odd and even particles: on a perturbed lattice it has near-null
 // modes, and a constraint imposed through it moves the velocity by O(|u|) (docs/methods/isph.md).
+//
+// method.projection = "orthogonal" takes that exact pair on a coarse pressure space instead
+// (projection/coarse_pressure_space.hpp): p = Pi q, cubic B-splines on a grid of spacing
+// method.orthogonal_spacing x dx, G the adjoint gradient -M^-1 D^T V, and
+//
+//   du/dt = a* - G Pi q,   K_c q = -(Pi^T V D (a* + alpha u - C) + E),   K_c = Pi^T K Pi,
+//
+// where C = (u . grad) u is the convective acceleration (convective_acceleration), whose divergence
+// stands for Q, and E = sum_a (grad Pi_a . u_a) V_a (D u)_a is the change of Pi^T V D u from the
+// particles moving across the fixed grid. D C takes the motion term through the same smoothing as
+// K = V D M^-1 D^T V (two kernel sums): with Q, computed from the kernel's Hessian in one sum, the
+// pressure of the Taylor-Green vortex came out 2-3 times too large and the 32^2 vortex blew up. Along the ODE d(D_c u)/dt = -alpha D_c u with D_c = Pi^T V D (up to the
+// change of the volumes V), and the velocity change of each stage is the orthogonal projection
+// P = I - M^-1 D_c^T K_c^-1 D_c of a* + alpha u: idempotent to round-off.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "core/scene.hpp"
 #include "projection/body_force_split.hpp"
+#include "projection/coarse_pressure_space.hpp"
+#include "projection/divergence_operator.hpp"
 #include "projection/density_relaxation.hpp"
 #include "projection/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
@@ -52,7 +68,8 @@ namespace arksph {
 
 // U / h, U the largest initial or wall speed (h / time.end for a fluid at rest between still walls).
 double flow_rate(const Scene& scene, const RhsEvaluator& rhs);
-// alpha = method.constraint_relaxation x U / h.
+// alpha = beta U / h, beta = method.constraint_relaxation (method.orthogonal_relaxation for the
+// orthogonal projection).
 double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs);
 
 struct ConstraintReport {
@@ -69,6 +86,9 @@ class ConstrainedPressure {
   // u <- u - G phi with L phi = D u (one approximate projection of the start), fields refreshed here.
   ConstraintReport project_velocity(double t, double* y);
   const std::vector<double>& pressure() const { return p_; }
+  // method.projection = "orthogonal": u <- P u for real velocities (u, v) at the fields of the last
+  // evaluation (the projection itself, for its idempotence test).
+  void project_orthogonal(double* u, double* v);
   double relaxation() const { return relaxation_; }
   // The P-W correction as a velocity inside f (method.density_correction), or null.
   const DensityRelaxation* density_relaxation() const { return density_.get(); }
@@ -82,6 +102,9 @@ class ConstrainedPressure {
   // (gx, gy) = G p_ (C&R eq. 11: sum_b m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab).
   // with_steps: wall points at P_src + rho ghost_dp (the pressure), or at P_src (a potential).
   void pressure_gradient(const std::vector<double>& p, bool with_steps);
+  // The orthogonal projection's pressure and gradient (gx_, gy_) for the source div_ of the last
+  // evaluation, (u, v) the velocities that move the particles across the grid.
+  void coarse_pressure(const double* u, const double* v);
 
   RhsEvaluator& rhs_;
   BodyForceSplit split_;
@@ -91,8 +114,10 @@ class ConstrainedPressure {
   bool zero_min_level_;
   std::unique_ptr<PoissonSolver> solver_;
   std::unique_ptr<DensityRelaxation> density_;
+  std::unique_ptr<CoarsePressureSpace> coarse_;  // method.projection = "orthogonal"
+  DivergenceOperator operator_;
   PoissonSystem system_;
-  std::vector<double> p_, solution_, div_, gx_, gy_, wx_, wy_, bx_, by_;
+  std::vector<double> p_, solution_, div_, udiv_, cx_, cy_, gx_, gy_, wx_, wy_, bx_, by_;
 };
 
 }  // namespace arksph

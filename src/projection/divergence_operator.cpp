@@ -166,4 +166,28 @@ double divergence_rms(const FluidFields& f, const double* u, const double* v) {
   return std::sqrt(s / vs);
 }
 
+void convective_acceleration(const FluidFields& f, const double* u, const double* v, std::vector<double>& cx,
+                             std::vector<double>& cy) {
+  const std::size_t n = f.n_real;
+  cx.assign(n, 0.0);
+  cy.assign(n, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    double gxx = 0, gxy = 0, gyx = 0, gyy = 0;  // g_kl = d u_k / d x_l
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+      const std::uint32_t src = f.src[b];
+      const double vb = f.m[b] / f.rho[b];
+      const double du = flip(f.flip_x, b) * u[src] - u[a];
+      const double dv = f.dim == 2 ? flip(f.flip_y, b) * v[src] - v[a] : 0.0;
+      gxx += vb * du * F * rx;
+      gxy += vb * du * F * ry;
+      gyx += vb * dv * F * rx;
+      gyy += vb * dv * F * ry;
+    });
+    const double va = f.dim == 2 ? v[a] : 0.0;
+    cx[a] = u[a] * gxx + va * gxy;
+    cy[a] = u[a] * gyx + va * gyy;
+  }
+}
+
 }  // namespace arksph

@@ -40,11 +40,13 @@ class DivergenceOperator {
   // K = V D M^-1 D^T V (column-major, both triangles), built at the first call after assemble().
   const SparseMatrix& normal_matrix();
   const std::vector<double>& volume() const { return vol_; }
+  // D's rows for velocity component k (n x n, real particles).
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  const RowMatrix& component(int k) const { return d_[k]; }
   // sum_b |D_ab| of component k's row a: the size of the terms that make (D u)_a, per unit |u|.
   const std::vector<double>& row_magnitude(int k) const { return row_abs_[k]; }
 
  private:
-  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   int dim_ = 2;
   std::size_t n_ = 0;
   RowMatrix d_[2];  // D's rows by velocity component
@@ -68,6 +70,11 @@ void divergence_minus_motion(const FluidFields& f, const double* wx, const doubl
 // out = D w, pair by pair (no matrix): the divergence of the constrained projection's source and of
 // the run's incompressibility measure.
 void difference_divergence(const FluidFields& f, const double* wx, const double* wy, double* out);
+// (cx, cy) = (u . grad) u with the difference-form gradient (grad u)_a = sum_b V_b (u_b - u_a) (x)
+// grad_a W_ab (wall images: reflected velocities): the convective acceleration, whose divergence
+// D (u . grad) u = tr(grad u grad u) + u . grad(D u) stands for Q where D u = 0.
+void convective_acceleration(const FluidFields& f, const double* u, const double* v, std::vector<double>& cx,
+                             std::vector<double>& cy);
 // r.m.s. of D u over the real particles, volume weighted.
 double divergence_rms(const FluidFields& f, const double* u, const double* v);
 

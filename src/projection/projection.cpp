@@ -37,15 +37,22 @@ std::string automatic_ppe_divergence(const Scene& s) {
 // constrained projection: zero_mean, the level its pressure converges with at the velocity's order
 // (ConstrainedPressure.hpp).
 std::string automatic_ppe_pressure_level(const Scene& s) {
-  return s.projection == "constrained" ? "zero_mean" : "zero_min";
+  return s.pressure_in_f() ? "zero_mean" : "zero_min";
 }
 }  // namespace
 
 const std::vector<Param>& projection_params() {
   static const std::vector<Param> params = {
-      choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained"})
-          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order (docs/methods/isph.md)")
+      choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained", "orthogonal"})
+          .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order; "
+               "orthogonal: as constrained, with an idempotent (orthogonal) projection on a coarse pressure space (docs/methods/isph.md)")
           .to(&Scene::projection),
+      number("method.orthogonal_spacing", 3.0).in(at_least(1))
+          .doc("orthogonal projection: spacing of the pressure's B-spline nodes over fluid.spacing (coarser: fewer constraints, better conditioned)")
+          .to(&Scene::orthogonal_spacing),
+      number("method.orthogonal_relaxation", 0.1).in(at_least(0))
+          .doc("orthogonal projection: beta of its relaxation rate alpha = beta U/h (as method.constraint_relaxation; smaller, because the coarse divergence of a smooth flow on disordered particles is not zero, and relaxing it damps the flow)")
+          .to(&Scene::orthogonal_relaxation),
       number("method.constraint_relaxation", 1.0).in(at_least(0))
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
           .to(&Scene::constraint_relaxation),
@@ -89,11 +96,11 @@ Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
   // The constrained projection carries the correction inside f (ConstrainedPressure).
-  if (scene.density_correction != "none" && scene.projection != "constrained")
+  if (scene.density_correction != "none" && !scene.pressure_in_f())
     correction_ = std::make_unique<DensityCorrection>(scene, rhs);
   // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
-  slip_origin_ = split_.active() && scene.projection_points == "step" && scene.projection != "constrained";
-  if (scene.projection == "constrained") {
+  slip_origin_ = split_.active() && scene.projection_points == "step" && !scene.pressure_in_f();
+  if (scene.pressure_in_f()) {
     constrained_ = std::make_unique<ConstrainedPressure>(scene, rhs);
     RhsOptions o = rhs_.options();
     o.pairs_at_every_f = true;  // constrain() walks the pairs of each f

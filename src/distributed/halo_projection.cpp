@@ -100,15 +100,8 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
   // 1. Fields at r* with u* over the rank's particles and the halo (the copies take u* too).
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-  if (split_.active()) {  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
-    split_.at(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, gx_, gy_);
-    saved_u_.assign(u, u + n);
-    if (v) saved_v_.assign(v, v + n);
-    for (std::size_t a = 0; a < n; ++a) {
-      u[a] -= dt * gx_[a];
-      if (v) v[a] -= dt * gy_[a];
-    }
-  }
+  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
+  if (split_.active()) split_.remove_step(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, dt, u, v);
   f_.set_slip_origin(false, 0.0);  // the increment is out of u* above: plain images
   // A field refresh that fails on one rank (a blown-up neighbour grid) fails on all, with its
   // message: the others would otherwise wait in the solve's collectives.
@@ -120,10 +113,7 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
   }
   refreshed = agree(comm_, refreshed);
   if (refreshed.code) throw NumericalFailure(refreshed.message);
-  if (split_.active()) {
-    std::copy(saved_u_.begin(), saved_u_.end(), u);
-    if (v) std::copy(saved_v_.begin(), saved_v_.end(), v);
-  }
+  if (split_.active()) split_.restore_velocities(u, v);
   const FluidFields& f = f_.evaluator().fields();
   const auto ta = std::chrono::steady_clock::now();
   if (!numbered_) {  // the rows of the rank's particles, after a deal or migration

@@ -76,7 +76,6 @@ class HaloProjection {
 
   BodyForceSplit split_;  // the body force's wall flux as Neumann data (body_force_split.hpp)
   bool slip_origin_;      // the stages' wall images take the increment (t - t_n) g (not with stages projected)
-  std::vector<double> gx_, gy_, saved_u_, saved_v_;
   bool centre_positions_, difference_divergence_, zero_min_level_;
   double pressure_offset_;
   // Valid while the rank's particles stay (cleared by particles_moved).

@@ -1,5 +1,7 @@
 #include "projection/body_force_split.hpp"
 
+#include <algorithm>
+
 namespace arksph {
 
 BodyForceSplit::BodyForceSplit(const Scene& scene) : force_(scene.body_force, scene) {
@@ -33,6 +35,22 @@ std::vector<double> BodyForceSplit::divergence(const FluidFields& f) const {
     div[a] = s;  // sum_b V_b (g_b - g_a) . grad_a W_ab: c for g = (c x, 0)
   }
   return div;
+}
+
+void BodyForceSplit::remove_step(std::size_t n, const double* x, const double* y, double t, double dt, double* u,
+                                 double* v) {
+  at(n, x, y, t, gx_, gy_);
+  saved_u_.assign(u, u + n);
+  if (v) saved_v_.assign(v, v + n);
+  for (std::size_t a = 0; a < n; ++a) {
+    u[a] -= dt * gx_[a];
+    if (v) v[a] -= dt * gy_[a];
+  }
+}
+
+void BodyForceSplit::restore_velocities(double* u, double* v) const {
+  std::copy(saved_u_.begin(), saved_u_.end(), u);
+  if (v) std::copy(saved_v_.begin(), saved_v_.end(), v);
 }
 
 }  // namespace arksph

@@ -46,10 +46,15 @@ class BodyForceSplit {
   // div g at the real particles of f, difference form over real neighbours and all ghosts with g at
   // each point's own position (zeros for a force uniform in space).
   std::vector<double> divergence(const FluidFields& f) const;
+  // Before the fields at r* of a projection: u <- u - dt g at the n particles (x, y) (y, v null in
+  // 1D), the velocities kept; restore_velocities puts them back once the fields are refreshed.
+  void remove_step(std::size_t n, const double* x, const double* y, double t, double dt, double* u, double* v);
+  void restore_velocities(double* u, double* v) const;
 
  private:
   BodyForceField force_;
   bool active_ = false;
+  std::vector<double> gx_, gy_, saved_u_, saved_v_;
 };
 
 }  // namespace arksph

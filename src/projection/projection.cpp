@@ -191,21 +191,11 @@ void Projection::project_velocities(double dt, double t, double* y) {
   const std::size_t n = L.n;
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-  if (split_.active()) {  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
-    split_.at(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, gx_, gy_);
-    saved_u_.assign(u, u + n);
-    if (v) saved_v_.assign(v, v + n);
-    for (std::size_t a = 0; a < n; ++a) {
-      u[a] -= dt * gx_[a];
-      if (v) v[a] -= dt * gy_[a];
-    }
-  }
+  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
+  if (split_.active()) split_.remove_step(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, dt, u, v);
   rhs_.set_slip_origin(false, 0.0);  // the increment is out of u* below: plain images
   rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u* (less dt g)
-  if (split_.active()) {
-    std::copy(saved_u_.begin(), saved_u_.end(), u);
-    if (v) std::copy(saved_v_.begin(), saved_v_.end(), v);
-  }
+  if (split_.active()) split_.restore_velocities(u, v);
   const FluidFields& f = rhs_.fields();
   // 2.-3. Pressure Poisson equation and velocity correction, on the particles or on the grid.
   const auto ta = std::chrono::steady_clock::now();

@@ -77,7 +77,6 @@ class Projection {
 
   RhsEvaluator& rhs_;
   BodyForceSplit split_;           // the body force's wall flux as Neumann data (body_force_split.hpp)
-  std::vector<double> gx_, gy_, saved_u_, saved_v_;
   bool slip_origin_ = false;       // the stages' wall images take the increment (t - t_n) g
   std::unique_ptr<PoissonSolver> solver_;
   double tolerance_;

@@ -33,6 +33,7 @@ GhostBuilder::GhostBuilder(const Scene& scene, double support_radius, bool perio
       hi_(scene.max),
       sides_(scene.sides),
       wall_particles_(scene.wall_particles && scene.dimension == 2),
+      wall_images_(scene.wall_ghosts),
       dx_(scene.spacing) {
   for (int k = 0; k < dim_; ++k) len_[k] = hi_[k] - lo_[k];
   any_side_ = true;
@@ -64,6 +65,7 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
         if (dist >= reach) continue;
         const SideSpec& s = sides_[side];
         if (s.kind == SideKind::periodic && !periodic_images_) continue;
+        if (s.kind == SideKind::wall && !wall_images_) continue;
         Option o;
         o.side = side;
         if (s.kind == SideKind::periodic) {

@@ -77,6 +77,7 @@ class GhostBuilder {
   std::array<double, 2> lo_{}, hi_{}, len_{};
   std::array<SideSpec, 4> sides_{};
   bool wall_particles_ = false;  // boundary.wall_particles (2D)
+  bool wall_images_ = true;      // boundary.wall_ghosts
   double dx_ = 1;
   void add_wall_particles(std::size_t i, const double p[2], double reach, GhostSet& g) const;
 };

@@ -40,6 +40,8 @@ struct Scene {
   double corner_alpha = 0.0;          // Szewc et al. 2012 eq. 46, range [-1, 1]
   bool free_slip_divergence = false;  // Szewc §6: free-slip images for the velocity divergence only
   bool wall_particles = false;  // Basa et al. 2008 §6.1.2: particles on the wall carrying its velocity (2D)
+  bool wall_ghosts = true;      // mirror images across the walls (false: wcsph with a wall force only)
+  std::string wall_force = "none";  // force of the walls on the fluid (rhs/term_registry.hpp)
   std::string wall_velocity = "mirror";  // no-slip ghost tangential velocity, Basa et al. 2008 §6.1.2: "mirror" | "linear" | "quadratic"
 
   // [fluid]

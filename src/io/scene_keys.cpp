@@ -104,6 +104,12 @@ std::vector<Group> general_keys() {
             .automatic(automatic_free_slip_divergence).to(&Scene::free_slip_divergence),
         choice("boundary.wall_velocity", "mirror").family("wall_velocity")
             .doc("tangential velocity of no-slip ghosts").to(&Scene::wall_velocity),
+        flag("boundary.wall_ghosts", true)
+            .doc("mirror images of the fluid across the walls (Szewc et al. 2012 §6); false: none, the walls act "
+                 "through boundary.wall_force only (wcsph)")
+            .to(&Scene::wall_ghosts),
+        choice("boundary.wall_force", "none").family("wall_force")
+            .doc("force of the walls on the fluid particles, added to the ghosts' action").to(&Scene::wall_force),
         flag("boundary.wall_particles", false)
             .doc("particles on the no-slip walls with the wall velocity, one per fluid particle within dx "
                  "(Basa et al. 2008 §6.1.2; 2D)")
@@ -228,7 +234,7 @@ const std::vector<FamilyInfo>& scene_families() {
       describe(correction_solvers()),    describe(poisson_solvers()),
       describe(wall_velocity_rules()),   describe(erk_tables()),
       describe(imex_pairs()),            describe(regularisations()),
-      describe(density_diffusions()),
+      describe(density_diffusions()),       describe(wall_forces()),
   };
   return families;
 }

@@ -102,6 +102,9 @@ void check_scene_options(const std::map<std::string, Section>& sections, const S
                                                             [](const SideSpec& x) { return x.kind == SideKind::wall; })))
     sections.at("boundary").fail("wall_particles", "needs a 2D scene with at least one wall (scene.dimension = " +
                                                        std::to_string(s.dimension) + ")");
+  if (!s.wall_ghosts && s.scheme != "wcsph")
+    sections.at("boundary").fail("wall_ghosts", "false needs method.scheme = \"wcsph\" (got \"" + s.scheme +
+                                                    "\": the pressure projection needs the walls' images)");
   if (s.ppe_operator != "approximate" && s.scheme != "isph")
     sections.at("method").fail("ppe_operator", "\"" + s.ppe_operator + "\" needs method.scheme = \"isph\" (got \"" +
                                                    s.scheme + "\": " +

@@ -23,6 +23,8 @@ Part<TermFactory> regularisation_shifting();
 Part<TermFactory> regularisation_transport_velocity();
 Part<TermFactory> density_diffusion_none();
 Part<TermFactory> density_diffusion_delta_sph();
+Part<TermFactory> wall_force_none();
+Part<TermFactory> wall_force_lennard_jones();
 
 const Registry<TermFactory>& viscosity_models() {
   static const Registry<TermFactory> r("viscosity_model", "method.viscosity_model", {
@@ -87,5 +89,13 @@ const Registry<TermFactory>& density_diffusions() {
 }
 
 Part<TermFactory> regularisation_none() { return {"none", "particles move with the fluid velocity, dr/dt = u"}; }
+
+const Registry<TermFactory>& wall_forces() {
+  static const Registry<TermFactory> r("wall_force", "boundary.wall_force", {
+      wall_force_none(),
+      wall_force_lennard_jones(),
+  });
+  return r;
+}
 
 }  // namespace arksph

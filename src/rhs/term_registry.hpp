@@ -22,5 +22,6 @@ const Registry<TermFactory>& density_modes();       // method.density_mode
 const Registry<TermFactory>& regularisations();     // method.regularisation ("none": no factory)
 // Built by terms_from_scene with the resolved sound speed (make_density_diffusion).
 const Registry<TermFactory>& density_diffusions();  // method.density_diffusion
+const Registry<TermFactory>& wall_forces();         // boundary.wall_force ("none": no factory)
 
 }  // namespace arksph

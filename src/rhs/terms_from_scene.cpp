@@ -62,6 +62,7 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
   if (const auto& part = regularisations().at(scene.regularisation); part.make) terms.push_back(build(part, scene));
   if (scene.viscosity > 0) terms.push_back(build(viscosity_models().at(scene.viscosity_model), scene));
   if (!is_zero_force(scene.body_force)) terms.push_back(make_body_force(scene.body_force));
+  if (const auto& part = wall_forces().at(scene.wall_force); part.make) terms.push_back(build(part, scene));
   return terms;
 }
 

@@ -13,6 +13,7 @@
 #include "io/scene_reader.hpp"
 #include "rhs/terms.hpp"
 #include "run/setup.hpp"
+#include "test_support.hpp"
 
 using namespace arksph;
 
@@ -47,10 +48,7 @@ struct Accelerations {
 };
 Accelerations evaluate(const Scene& scene) {
   Model model = build_model(scene);
-  std::vector<double> y(model.rhs->layout().size());
-  model.rhs->initial_state(y.data());
-  model.rhs->eval(0.0, y.data(), nullptr);
-  const FluidFields& f = model.rhs->fields();
+  const FluidFields& f = fields_at_start(model);
   Accelerations out;
   out.ghosts = f.n_all - f.n_real;
   for (std::size_t a = 0; a < f.n_real; ++a) {

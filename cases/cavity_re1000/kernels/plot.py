@@ -29,23 +29,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "steady"))
+from plot import read_rows  # noqa: E402  (the steady study's reader of arksph's CSV files)
 SCHEMES = ["wcsph", "isph-gpps", "isph"]
 N3600_SPACING = 1.0 / 60.0
-
-
-def read_rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(l for l in f if not l.startswith("#")))
-
-
-def run_keys(folder):
-    keys = {}
-    with open(os.path.join(folder, "batch_run.txt")) as f:
-        for a in f.read().split():
-            if "=" in a:
-                k, v = a.split("=", 1)
-                keys[k] = v
-    return keys
 
 
 def runs_of(folder, study):
@@ -57,7 +44,7 @@ def runs_of(folder, study):
         path = os.path.join(folder, name)
         if not os.path.exists(os.path.join(path, "batch_run.txt")):
             continue
-        k = run_keys(path)
+        k = dict(a.split("=", 1) for a in open(os.path.join(path, "batch_run.txt")).read().split() if "=" in a)
         if study == "steady":  # only the N = 3600 runs without the P-W correction
             if abs(float(k["fluid.spacing"]) - N3600_SPACING) > 1e-9 or k.get("method.density_correction", "none") != "none":
                 continue

@@ -16,6 +16,7 @@
 #include "test_support.hpp"
 
 using namespace arksph;
+using arksph::testing::fields_at_start;
 
 namespace {
 const char* kBox = R"toml(

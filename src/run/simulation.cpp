@@ -143,6 +143,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   int frame = checkpoints.first_frame();
   int tiny_steps = 0;  // adaptive steps in a row below the underflow floor (check_step_size)
   RunResult result;
+  auto loop_start = clock::now();
   try {
     // Output at t = 0, every `every`, and the end time exactly.
     if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
@@ -150,6 +151,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
     poll_setup_interrupt();
     rhs.set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
     set_activity("stepping " + particles);
+    loop_start = clock::now();
     while (t < scene.end) {
       double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;  // 3 * 0.1 -> 0.3
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
@@ -216,6 +218,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const ErkStats st = integrator.stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   if (scene.reorder_every > 0) out.set_reorders(reorder.count(), reorder.seconds());
+  out.set_stepping_seconds(std::chrono::duration<double>(clock::now() - loop_start).count());
   try {
     out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
   } catch (const OutputError& e) {

@@ -13,8 +13,7 @@
 #   strong-1   1 rank,  1 thread,  unit box (N)
 # Each runs to t = S * 0.045 DX (about S steps of the stability limit 0.25 h / (c + |u|)), frames
 # only at t = 0 and the end. One rank is a plain process (no mpirun). Time per step: summary.json
-# timing.stepping (the time loop) minus timing.output and timing.diagnostics (rank 0's frames and
-# their whole-model field refresh, which a one-process run does over its own list), over the steps.
+# timing.stepping (the steps alone: no set-up, frames or checkpoints) over the steps.
 # Memory: the largest resident set (one process: /usr/bin/time; ranks: summary.json
 # mpi.max_rss_kb, each rank's getrusage) over the particles of the rank.
 # Prints a table and writes OUT/scaling.json. The machine load (uptime) is printed before each run.
@@ -72,7 +71,7 @@ rows = {}
 for name, ranks in (("weak-1", 1), ("ranks-2", 2), ("threads-2", 1), ("strong-1", 1)):
     s = json.load(open(f"{out}/{name}/summary.json"))
     t = s["timing"]
-    step_s = (t["stepping"] - t["output"] - t["diagnostics"]) / s["steps"]
+    step_s = t["stepping"] / s["steps"]
     if ranks == 1:
         rss = [int(open(f"{out}/{name}.rss").read().split()[-1])]
     else:

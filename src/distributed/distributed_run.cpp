@@ -198,13 +198,23 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   }
   // The whole model's neighbour list and fields are not needed again until rank 0's next frame
   // (the ranks step their own evaluators): freed, so that a rank holds them only while it needs them.
-  rhs.release_storage();
+  // The other ranks never evaluate it: its evaluator's particle data and the model's initial
+  // positions and velocities go too (a new deal reads only masses, densities, phases and ids).
+  if (root) {
+    rhs.release_storage();
+  } else {
+    rhs.release_particles();
+    ParticleSet& all = model.particles;
+    for (auto* v : {&all.init_pos[0], &all.init_pos[1], &all.init_vel[0], &all.init_vel[1]})
+      std::vector<double>().swap(*v);
+  }
 
   // The particles dealt to the ranks from the whole state (at t = 0, a restart and every checkpoint).
   const parallel::CellGrid grid(domain_of(scene), rhs.kernel().radius());
   std::optional<parallel::Decomposition> decomposition;
   together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, y0.data(), ranks, scene)); });
   RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
+  std::vector<double>().swap(y0);  // the ranks hold the state from here
   HaloRhs f(scene, model, comm, mine);
   f.set_decomposition(*decomposition);
   const StateGather gather(model.particles.id, layout);
@@ -266,7 +276,6 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   };
   start_integrator(checkpoints->start_time(), restarting ? checkpoints->restart().next_step : 0.0,
                    checkpoints->counters());
-  std::vector<double>().swap(y0);
 
   std::unique_ptr<RunOutput> out;
   together(comm, [&] {
@@ -382,13 +391,14 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     start_integrator(at, h, counters);
     count_fewest();
   };
-  const auto loop_start = clock::now();
+  double stepping = 0;  // the steps alone (summary.json timing.stepping)
   try {
     while (t < scene.end) {
       double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;
       while (t < t_next) {
+        const auto step_start = clock::now();
 #ifdef ARKSPH_WITH_HYPRE
         if (projection) projection->begin_step(t, integrator->state());
 #endif
@@ -425,6 +435,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
         }
         if (scene.reorder_every > 0 && st.steps % scene.reorder_every == 0) migrate(t);
         progress.step(t, st.steps, st.last_step);
+        stepping += std::chrono::duration<double>(clock::now() - step_start).count();
         if (t < t_next) checkpoint_if_due(t);
       }
       if (result.exit_code) break;
@@ -465,7 +476,6 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     }
   }
   progress.finish();
-  const double stepping = std::chrono::duration<double>(clock::now() - loop_start).count();
   const ErkStats st = integrator->stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   Verdict last{result.exit_code, result.message};

@@ -139,6 +139,17 @@ void RhsEvaluator::release_storage() {
   f.n_all = 0;
 }
 
+void RhsEvaluator::release_particles() {
+  release_storage();
+  ParticleSet& p = particles_;
+  for (auto* v : {&p.mass, &p.rho0, &p.init_pos[0], &p.init_pos[1], &p.init_vel[0], &p.init_vel[1], &p.init_rho})
+    std::vector<double>().swap(*v);
+  std::vector<std::int64_t>().swap(p.id);
+  std::vector<std::int32_t>().swap(p.phase);
+  for (auto* v : {&fields_.rho0, &fields_.dudt, &fields_.dvdt, &fields_.drhodt, &fields_.dedt})
+    std::vector<double>().swap(*v);
+}
+
 void RhsEvaluator::initial_state(double* y) const {
   const std::size_t n = layout_.n;
   for (int k = 0; k < layout_.dim; ++k) {

@@ -87,6 +87,10 @@ class RhsEvaluator {
   // anew (it rebuilds the list and the ghosts): a caller that will not evaluate for a while (the
   // whole model of a decomposed run between output frames). fields() are empty until then.
   void release_storage();
+  // release_storage, and the per-particle data besides: only layout(), kernel() and the counters
+  // stay usable, and eval must not be called again (the whole model of a decomposed run on the
+  // ranks that never evaluate it).
+  void release_particles();
   const RhsTiming& timing() const { return timing_; }
 
   // f_I of the last eval() with options().imex_split: zero except the velocity block, which holds

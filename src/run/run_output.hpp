@@ -53,8 +53,8 @@ class RunOutput {
     reorders_ = count;
     reorder_seconds_ = seconds;
   }
-  // summary.json timing.stepping: the wall time of the time loop (steps, and the frames and
-  // checkpoints written in it), set-up and the frame at t = 0 excluded.
+  // summary.json timing.stepping: the wall time of the steps alone (each step with its checks,
+  // reflections and re-sorts or migrations), without set-up, frames and checkpoints.
   void set_stepping_seconds(double seconds) { stepping_seconds_ = seconds; }
 
  private:

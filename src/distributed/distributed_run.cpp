@@ -215,6 +215,12 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, y0.data(), ranks, scene)); });
   RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
   std::vector<double>().swap(y0);  // the ranks hold the state from here
+  // The rank's particles by cell, as one process sorts its own at t = 0 and at its re-sorts
+  // (method.reorder_every > 0; 0 keeps the dealt order, as one process keeps its own).
+  const auto sort_mine = [&] {
+    if (scene.reorder_every > 0) mine.sort_by_cell(scene.min.data(), rhs.kernel().radius());
+  };
+  sort_mine();
   HaloRhs f(scene, model, comm, mine);
   f.set_decomposition(*decomposition);
   const StateGather gather(model.particles.id, layout);
@@ -359,6 +365,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     decomposition.emplace(bisect(grid, counts, ranks, scene));
     parallel::migrate(comm, *decomposition, F);
     mine.refresh_ids();
+    sort_mine();
     f.set_decomposition(*decomposition);
     moved();
     integrator->resize(mine.state(), at, h);
@@ -386,6 +393,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     write_checkpoint_at(at, all);
     decomposition.emplace(bisect_state(grid, layout, all.data(), ranks, scene));
     mine = RankParticles(model.particles, layout, all.data(), *decomposition, comm.rank());
+    sort_mine();
     f.set_decomposition(*decomposition);
     moved();
     start_integrator(at, h, counters);

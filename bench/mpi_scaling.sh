@@ -11,6 +11,8 @@
 #   ranks-2    2 ranks, 1 thread,  unit box (N)    weak scaling against weak-1, strong against strong-1
 #   threads-2  1 rank,  2 threads, unit box (N)    the same cores as ranks-2, shared memory
 #   strong-1   1 rank,  1 thread,  unit box (N)
+#   pair-1     two weak-1 runs at once, no MPI: what the machine gives two processes of N/2 each
+#              (shared memory bandwidth and caches), the ceiling of the weak scaling
 # Each runs to t = S * 0.045 DX (about S steps of the stability limit 0.25 h / (c + |u|)), frames
 # only at t = 0 and the end. One rank is a plain process (no mpirun). Time per step: summary.json
 # timing.stepping (the steps alone: no set-up, frames or checkpoints) over the steps.
@@ -62,6 +64,13 @@ run weak-1 1 1 "${half[@]}"
 run ranks-2 2 1
 run threads-2 1 2
 run strong-1 1 1
+echo "== pair-1: two 1-rank runs at once; load: $(uptime | sed 's/.*load average: //')"
+for k in a b; do
+  rm -rf "${out:?}/pair-1$k"
+  OMP_NUM_THREADS=1 /usr/bin/time -f "%M" -o "$out/pair-1$k.rss" \
+    "$arksph" run "$scene" --out "$out/pair-1$k" "${common[@]}" "${half[@]}" > "$out/pair-1$k.log" 2>&1 &
+done
+wait
 echo "== done; load: $(uptime | sed 's/.*load average: //')"
 
 python3 - "$out" <<'EOF'
@@ -82,10 +91,14 @@ for name, ranks in (("weak-1", 1), ("ranks-2", 2), ("threads-2", 1), ("strong-1"
                       bytes_per_particle=[1024.0 * r / per_rank for r in rss],
                       halo_exchanges=s["mpi"].get("halo_exchanges"), mpi_seconds=s["mpi"].get("seconds"))
 w1, r2, t2, s1 = (rows[k] for k in ("weak-1", "ranks-2", "threads-2", "strong-1"))
+pair = [json.load(open(f"{out}/pair-1{k}/summary.json")) for k in "ab"]
+pair_step = max(p["timing"]["stepping"] / p["steps"] for p in pair)
 summary = {
     "weak_efficiency": w1["step_seconds"] / r2["step_seconds"],
     "strong_efficiency": s1["step_seconds"] / (2 * r2["step_seconds"]),
     "threads_over_ranks": t2["step_seconds"] / r2["step_seconds"],
+    "pair_step_seconds": pair_step,
+    "pair_efficiency": w1["step_seconds"] / pair_step,
     "memory_ratio_max_rank": max(r2["bytes_per_particle"]) / w1["bytes_per_particle"][0],
     "memory_ratio_per_rank": [b / w1["bytes_per_particle"][0] for b in r2["bytes_per_particle"]],
 }
@@ -95,6 +108,7 @@ for k, r in rows.items():
     bpp = ", ".join(f"{x:.0f}" for x in r["bytes_per_particle"])
     print(f"{k:10} {r['particles']:>9} {r['ranks']:>5} {r['steps']:>5} {r['wall']:>8.1f} {r['step_seconds']:>8.3f} {rss:>24} {bpp:>16}")
 print(f"weak efficiency (weak-1 / ranks-2, per step): {summary['weak_efficiency']:.2f}")
+print(f"two 1-rank runs at once: {pair_step:.3f} s/step (the slower), efficiency {summary['pair_efficiency']:.2f}: the machine's ceiling")
 print(f"strong efficiency (strong-1 / (2 x ranks-2)): {summary['strong_efficiency']:.2f}")
 print(f"1 rank x 2 threads / 2 ranks x 1 thread, time per step: {summary['threads_over_ranks']:.2f}")
 print("memory per particle, ranks-2 / weak-1: max rank {:.2f}, per rank {}".format(

@@ -7,6 +7,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include <sys/resource.h>
+
 #include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
 #include "core/scheme.hpp"
@@ -160,11 +162,24 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   }
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
-  rhs.eval(0.0, y0.data(), nullptr);  // the fields at t = 0: number density, the checker's speed bound
-  std::vector<double> d0 = number_density(rhs.fields());
+  // The whole model's fields at t = 0 on rank 0 only (the other ranks never evaluate the whole model,
+  // so that they hold no neighbour list of it): the number density of its output, and the largest
+  // acceleration, which every rank's state checker takes for its speed bound.
+  std::vector<double> d0;
+  double accel0 = 0;
+  together(comm, [&] {
+    if (!root) return;
+    rhs.eval(0.0, y0.data(), nullptr);
+    d0 = number_density(rhs.fields());
+    accel0 = rhs.max_acceleration();
+  });
+  accel0 = comm.max(accel0);
   // Restart: the model's particles in the checkpoint's order (every rank read the checkpoint), checked
   // against the scene; rank 0 reads the earlier output before RunOutput truncates it.
-  if (options.restart) permute(d0, adopt_particle_order(model, options.restart->id));
+  if (options.restart) {
+    const auto order = adopt_particle_order(model, options.restart->id);
+    if (root) permute(d0, order);
+  }
   std::optional<Checkpointer> checkpoints;
   together(comm, [&] { checkpoints.emplace(scene, model, options.restart, options.restart_path); });
   checkpoints->set_run_id(run_id);
@@ -175,11 +190,23 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       earlier = read_output_history(scene.directory, checkpoints->start_time(), checkpoints->restart().output_frame,
                                     scene.every);
   });
-  const StateChecker checker(scene, model);
+  const StateChecker checker(scene, model, accel0);
   if (restarting) {
     y0 = checkpoints->restart().state;
     rhs.invalidate_neighbors();  // rank 0's output refreshes the fields of the whole model in the new order
     together(comm, [&] { checker.check(checkpoints->start_time(), y0.data()); });  // NaN, blow-up, escape in the file
+  }
+  // The whole model's neighbour list and fields are not needed again until rank 0's next frame
+  // (the ranks step their own evaluators): freed, so that a rank holds them only while it needs them.
+  // The other ranks never evaluate it: its evaluator's particle data and the model's initial
+  // positions and velocities go too (a new deal reads only masses, densities, phases and ids).
+  if (root) {
+    rhs.release_storage();
+  } else {
+    rhs.release_particles();
+    ParticleSet& all = model.particles;
+    for (auto* v : {&all.init_pos[0], &all.init_pos[1], &all.init_vel[0], &all.init_vel[1]})
+      std::vector<double>().swap(*v);
   }
 
   // The particles dealt to the ranks from the whole state (at t = 0, a restart and every checkpoint).
@@ -187,6 +214,13 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   std::optional<parallel::Decomposition> decomposition;
   together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, y0.data(), ranks, scene)); });
   RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
+  std::vector<double>().swap(y0);  // the ranks hold the state from here
+  // The rank's particles by cell, as one process sorts its own at t = 0 and at its re-sorts
+  // (method.reorder_every > 0; 0 keeps the dealt order, as one process keeps its own).
+  const auto sort_mine = [&] {
+    if (scene.reorder_every > 0) mine.sort_by_cell(scene.min.data(), rhs.kernel().radius());
+  };
+  sort_mine();
   HaloRhs f(scene, model, comm, mine);
   f.set_decomposition(*decomposition);
   const StateGather gather(model.particles.id, layout);
@@ -217,9 +251,11 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   eo.state_vector = mpi_state_vector(comm.comm());
   eo.any_rank = [&comm](bool local) { return comm.max(static_cast<std::int64_t>(local)) > 0; };
   eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(mine.layout(), mine.ids(), i, v); };
+  // The largest speed (of y) and acceleration (of the last f) over the ranks: one all-reduce.
   const auto stable = [&](const double* yl) {
-    return stable_step(scene, model, comm.max(max_speed(mine.layout(), yl)),
-                       comm.max(f.local_max_acceleration()));
+    std::vector<double> largest{max_speed(mine.layout(), yl), f.local_max_acceleration()};
+    comm.max_in_place(largest);
+    return stable_step(scene, model, largest[0], largest[1]);
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };
 #ifdef ARKSPH_WITH_HYPRE
@@ -246,7 +282,6 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   };
   start_integrator(checkpoints->start_time(), restarting ? checkpoints->restart().next_step : 0.0,
                    checkpoints->counters());
-  std::vector<double>().swap(y0);
 
   std::unique_ptr<RunOutput> out;
   together(comm, [&] {
@@ -289,11 +324,18 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       const std::vector<double> all = whole_state(false);
       if (root) out->write(at, all.data(), d0, st);
     });
+    if (root) rhs.release_storage();  // until the next frame (the whole model's list and fields)
   };
   if (!restarting) write_frame(0.0, integrator->stats());
 
   Progress progress(scene.end, options.quiet || !root);
-  long reflections = restarting ? checkpoints->restart().wall_reflections : 0;
+  // Wall reflections: the run's before a restart, and this rank's since (summed over the ranks at
+  // each checkpoint and at the end, not at every step).
+  const long reflections_before = restarting ? checkpoints->restart().wall_reflections : 0;
+  long reflections_here = 0;
+  const auto reflections = [&] {
+    return reflections_before + static_cast<long>(comm.sum(static_cast<std::int64_t>(reflections_here)));
+  };
   long migrations = 0;
   // The fewest particles a rank owned after a deal or a migration (summary.json mpi.fewest_particles).
   std::int64_t fewest = -comm.max(-static_cast<std::int64_t>(mine.size()));
@@ -323,6 +365,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     decomposition.emplace(bisect(grid, counts, ranks, scene));
     parallel::migrate(comm, *decomposition, F);
     mine.refresh_ids();
+    sort_mine();
     f.set_decomposition(*decomposition);
     moved();
     integrator->resize(mine.state(), at, h);
@@ -332,8 +375,9 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   };
   // The checkpoint of the whole state at t, written by rank 0. Returns the path.
   const auto write_checkpoint_at = [&](double at, const std::vector<double>& all) {
+    const long reflected = reflections();
     together(comm, [&] {
-      if (root) checkpoints->write_state(at, all.data(), integrator->stats(), integrator->next_step(), frame, reflections);
+      if (root) checkpoints->write_state(at, all.data(), integrator->stats(), integrator->next_step(), frame, reflected);
     });
     last_checkpoint = at;
     return checkpoints->path();
@@ -349,17 +393,20 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     write_checkpoint_at(at, all);
     decomposition.emplace(bisect_state(grid, layout, all.data(), ranks, scene));
     mine = RankParticles(model.particles, layout, all.data(), *decomposition, comm.rank());
+    sort_mine();
     f.set_decomposition(*decomposition);
     moved();
     start_integrator(at, h, counters);
     count_fewest();
   };
+  double stepping = 0;  // the steps alone (summary.json timing.stepping)
   try {
     while (t < scene.end) {
       double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;
       while (t < t_next) {
+        const auto step_start = clock::now();
 #ifdef ARKSPH_WITH_HYPRE
         if (projection) projection->begin_step(t, integrator->state());
 #endif
@@ -372,13 +419,10 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
         } catch (const NumericalFailure& e) {
           v = {3, e.what()};
         }
-        const long r = static_cast<long>(
-            comm.sum(static_cast<std::int64_t>(WallReflection(scene, mine.layout()).apply(integrator->state()))));
-        if (r) {  // sync point: every rank re-initialises
-          reflections += r;
-          integrator->reset(t);
-        }
-        if (scene.reorder_every > 0 && st.steps % scene.reorder_every == 0) migrate(t);
+        // This rank's reflections and state check (the reflected state: a migration moves it
+        // unchanged), then one all-reduce: the verdict, and whether any rank reflected.
+        const long r = static_cast<long>(WallReflection(scene, mine.layout()).apply(integrator->state()));
+        reflections_here += r;
         try {
           checker.check(t, integrator->state(), mine.layout(), mine.ids());
         } catch (const NumericalFailure& e) {
@@ -389,13 +433,17 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
                       " before time.end"};
         if (const int sig = pending_interrupt(); sig && !v.code)
           v = {128 + sig, std::string("interrupted by ") + interrupt_name(sig) + " at t = " + std::to_string(t)};
-        v = agree(comm, v);
+        std::int64_t reflected = r > 0 ? 1 : 0;
+        v = agree(comm, v, reflected);
+        if (reflected) integrator->reset(t);  // sync point: every rank re-initialises
         if (v.code) {
           result.exit_code = v.code;
           result.message = v.message;
           break;
         }
+        if (scene.reorder_every > 0 && st.steps % scene.reorder_every == 0) migrate(t);
         progress.step(t, st.steps, st.last_step);
+        stepping += std::chrono::duration<double>(clock::now() - step_start).count();
         if (t < t_next) checkpoint_if_due(t);
       }
       if (result.exit_code) break;
@@ -439,17 +487,33 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   const ErkStats st = integrator->stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   Verdict last{result.exit_code, result.message};
+  const long reflected = reflections();
+  // The peak resident memory of every rank (getrusage; kB on Linux), for summary.json.
+  std::vector<std::int64_t> peak_kb;
+  {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    peak_kb = comm.gatherv(std::vector<std::int64_t>{static_cast<std::int64_t>(usage.ru_maxrss)});
+  }
   if (root) {
     Json mpi = Json::object();
     mpi.set("ranks", ranks).set("halo_exchanges", f.exchanges()).set("migrations", migrations);
     mpi.set("fewest_particles", static_cast<long>(fewest));
+    Json seconds = Json::object();  // rank 0's wall time in f (distributed/halo_rhs.hpp)
+    seconds.set("halo_exchange", f.seconds().exchange).set("halo_update", f.seconds().update);
+    seconds.set("evaluator", f.seconds().evaluator);
+    mpi.set("seconds", seconds);
+    Json peaks = Json::array();
+    for (std::int64_t kb : peak_kb) peaks.push(static_cast<long>(kb));
+    mpi.set("max_rss_kb", peaks);  // per rank, in rank order
     out->set_mpi(mpi);
     if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
+    out->set_stepping_seconds(stepping);
 #ifdef ARKSPH_WITH_HYPRE
     if (projection) out->set_projection_report(projection->stats(), HaloProjection::solver_name());
 #endif
     try {
-      out->finish(result, st, wall, rhs.evaluations() - diag_before + 1, reflections, f.exchanges());
+      out->finish(result, st, wall, rhs.evaluations() - diag_before + 1, reflected, f.exchanges());
     } catch (const OutputError& e) {
       last = {result.exit_code ? result.exit_code : 5,
               result.message.empty() ? e.what() : result.message + "; " + e.what()};

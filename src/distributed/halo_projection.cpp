@@ -50,6 +50,7 @@ std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>&
 
 void HaloProjection::particles_moved() {
   numbered_ = false;
+  solver_.invalidate();  // the hierarchy was set up on the old numbering
   solution_.clear();
   y_prev_.clear();
 }
@@ -145,6 +146,7 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
   stats_.solve_seconds += since(ts);
   ++stats_.solves;
   stats_.iterations += rep.iterations;
+  stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;
   stats_.last_residual = rep.relative_residual;
   stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
 

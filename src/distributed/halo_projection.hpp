@@ -9,7 +9,8 @@
 //      L(P) = div(u*)/dt with global row numbers (distributed_ppe/ppe_rows.hpp: the rows of the
 //      one-process assemble_ppe), solved by hypre's BoomerAMG-preconditioned PCG
 //      (distributed_ppe/hypre_poisson.hpp) to method.ppe_tolerance, warm-started from the last
-//      solution while the rank's particles stay the same;
+//      solution and reusing the BoomerAMG hierarchy (set up anew by hypre_poisson's rule, and
+//      after each migration) while the rank's particles stay the same;
 //   3. P at the scene's level (zero mean or zero minimum over all ranks) plus the offset, sent to the
 //      halo copies; the velocity correction u = u* - dt sum_b m_b (P_b/rho_b^2 + P_a/rho_a^2)
 //      grad_a W_ab (C&R eq. 11) of the owned particles, wall ghosts carrying their source's P;
@@ -53,7 +54,7 @@ class HaloProjection {
   // t = t_n + c_i h with dt = c_i h (steps 1-3: no centring), as Projection::project_stage.
   void project_stage(double t, double* y);
   // The rank's particles changed (migration, a new deal): the rows are numbered anew and the solver
-  // starts cold.
+  // starts cold (no warm start, a new hierarchy).
   void particles_moved();
   // Counters as ProjectionStats: solves, iterations and residuals are global (the same on every
   // rank), times this rank's.

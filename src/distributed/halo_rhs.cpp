@@ -1,6 +1,7 @@
 #include "distributed/halo_rhs.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "kernels/kernel.hpp"
@@ -9,6 +10,9 @@
 namespace arksph::distributed {
 
 namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 // The neighbourhoods a particle's sums depend on: its own and its neighbours' (see the header).
 constexpr double kHaloSupports = 2.0;
 // The Verlet skin of the neighbour search (rhs/neighbor_cache.cpp), as a fraction of the support.
@@ -34,10 +38,11 @@ HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communi
 
 void HaloRhs::set_decomposition(const parallel::Decomposition& decomposition) {
   decomposition_ = &decomposition;
-  evaluator_.reset();  // the particles were migrated: exchange at the next eval
+  exchange_due_ = true;  // the particles were migrated: exchange at the next eval
 }
 
 void HaloRhs::exchange() {
+  const auto t0 = std::chrono::steady_clock::now();
   parallel::ParticleFields& F = owned_.fields();
   const RankFieldIndex& ix = owned_.index();
   const parallel::Domain& domain = decomposition_->grid().domain();
@@ -66,9 +71,16 @@ void HaloRhs::exchange() {
   const std::vector<parallel::Box> boxes = comm_.allgatherv(std::vector<parallel::Box>{mine});
   exchange_.exchange(comm_, domain, boxes, F, cutoff_, halo_);
   build_evaluator();
+  exchange_due_ = false;
   ++exchanges_;
+  seconds_.exchange += seconds_since(t0);
 }
 
+// The evaluator over the rank's particles, then the halo copies: built at the first exchange, and
+// given the new particle set at each later one (RhsEvaluator::replace_particles), which keeps the
+// storage of its fields, ghosts and neighbour list. Its neighbour list and ghosts are built anew at
+// the next eval either way, so the sums are those of a fresh evaluator. No initial positions or
+// velocities: the state comes from eval, never from RhsEvaluator::initial_state.
 void HaloRhs::build_evaluator() {
   const parallel::ParticleFields& F = owned_.fields();
   const RankFieldIndex& ix = owned_.index();
@@ -78,19 +90,24 @@ void HaloRhs::build_evaluator() {
   set.dx = model_.particles.dx;
   set.init_energy = model_.particles.init_energy;
   const auto joined = [&](int field) {
-    std::vector<double> v(F.field[static_cast<std::size_t>(field)]);
+    std::vector<double> v;
+    v.reserve(set.n);
+    const auto& o = F.field[static_cast<std::size_t>(field)];
     const auto& h = halo_.field[static_cast<std::size_t>(field)];
+    v.insert(v.end(), o.begin(), o.end());
     v.insert(v.end(), h.begin(), h.end());
     return v;
   };
   set.mass = joined(ix.mass());
   set.rho0 = joined(ix.rho0());
+  set.phase.reserve(set.n);
   for (double p : joined(ix.phase())) set.phase.push_back(static_cast<std::int32_t>(p));
+  set.id.reserve(set.n);
   for (std::uint64_t id : F.id) set.id.push_back(static_cast<std::int64_t>(id));
   for (std::uint64_t id : halo_.id) set.id.push_back(static_cast<std::int64_t>(id));
-  for (int k = 0; k < ix.dim; ++k) {
-    set.init_pos[k] = joined(ix.seen(k));
-    set.init_vel[k] = joined(ix.vel(k));
+  if (evaluator_) {
+    evaluator_->replace_particles(std::move(set));
+    return;
   }
   RhsOptions options;
   options.periodic_images = false;
@@ -122,8 +139,12 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   const RankFieldIndex& ix = owned_.index();
   const std::size_t n = F.size();
   owned_.load(y);
-  bool fresh = !evaluator_;
-  if (!fresh) {  // the seen positions moved with the state; the largest displacement over the ranks
+  if (exchange_due_) {
+    exchange();
+  } else {
+    // The seen positions move with the state; this rank's largest displacement since the exchange
+    // travels with the halo values, and every rank learns the largest over the ranks from them.
+    const auto t0 = std::chrono::steady_clock::now();
     double moved2 = 0;
     for (std::size_t a = 0; a < n; ++a) {
       double d2 = 0;
@@ -135,12 +156,11 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
       }
       moved2 = std::max(moved2, d2);  // NaN positions: the state checks, not here
     }
-    fresh = comm_.max(moved2) > 0.25 * skin_ * skin_;
+    const double largest = exchange_.update_max(comm_, F, update_fields_, halo_, moved2);
+    seconds_.update += seconds_since(t0);
+    if (largest > 0.25 * skin_ * skin_) exchange();  // the copies just sent are replaced
   }
-  if (fresh)
-    exchange();
-  else
-    exchange_.update(comm_, F, update_fields_, halo_);
+  const auto t_eval = std::chrono::steady_clock::now();
 
   // The evaluator's state: this rank's particles, then the halo copies.
   const StateLayout& L = evaluator_->layout();
@@ -157,8 +177,9 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   }
   if (L.has_density) place(ix.rho(), L.rho());
   if (L.has_energy) place(ix.e(), L.energy());
-  if (!ydot) {  // the fields only (output.pieces), as a whole frame's refresh
+  if (!ydot) {  // the fields only (output.pieces, the projection), as a whole frame's refresh
     evaluator_->eval(t, y_all_.data(), nullptr);
+    seconds_.evaluator += seconds_since(t_eval);
     return;
   }
   ydot_all_.resize(L.size());
@@ -182,6 +203,7 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   }
   if (L.has_density) take(L.rho(), mine.rho());
   if (L.has_energy) take(L.energy(), mine.energy());
+  seconds_.evaluator += seconds_since(t_eval);
 }
 
 }  // namespace arksph::distributed

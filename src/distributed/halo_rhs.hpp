@@ -12,9 +12,12 @@
 // build walls only (RhsOptions::periodic_images off): the periodic images are halo copies.
 //
 // At each evaluation the copies take the state's new positions, velocities, density and energy
-// from their owners (HaloExchange::update, one all-to-all). When some particle has moved more than
-// skin / 2 since the last exchange (the largest displacement over all ranks), the halo is exchanged
-// anew from the current positions and the evaluator rebuilt over the new set. The halo rule uses
+// from their owners, and every rank its largest displacement since the last exchange from every
+// other (HaloExchange::update_max: one all-to-all with the counts of the exchange, no other
+// collective). When some particle has moved more than skin / 2 since the last exchange, the halo is
+// exchanged anew from the current positions and the evaluator takes the new set
+// (RhsEvaluator::replace_particles: its neighbour list is built anew into the old storage, as the
+// Verlet list of one process is at the same rule). The halo rule uses
 // each rank's block of the decomposition grown around its particles' current positions, so the
 // halo stays complete however far particles have left their block since the last migration.
 //
@@ -47,7 +50,14 @@ class HaloRhs {
   double local_max_acceleration() const { return max_accel_; }
   // The evaluator of the last eval: its fields hold this rank's particles first, then the halo.
   const RhsEvaluator& evaluator() const { return *evaluator_; }
-  long exchanges() const { return exchanges_; }  // halo exchanges (with a new evaluator) so far
+  long exchanges() const { return exchanges_; }  // halo exchanges (each with a new neighbour list) so far
+  // This rank's wall time in eval: halo exchanges (geometry, copies, the evaluator's new particle
+  // set), halo updates (the all-to-all of each eval, waiting for the other ranks included) and the
+  // evaluator (neighbour list and terms).
+  struct Seconds {
+    double exchange = 0, update = 0, evaluator = 0;
+  };
+  const Seconds& seconds() const { return seconds_; }
   double cutoff() const { return cutoff_; }
   std::size_t halo_size() const { return halo_.size(); }
   // Collective. The values `own` of this rank's particles (one each, in the rank's order) at their
@@ -77,6 +87,8 @@ class HaloRhs {
   std::vector<double> y_all_, ydot_all_;
   double max_accel_ = 0;
   long exchanges_ = 0;
+  bool exchange_due_ = true;
+  Seconds seconds_;
   bool slip_on_ = false;
   double slip_t0_ = 0;
 };

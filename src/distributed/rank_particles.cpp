@@ -1,5 +1,7 @@
 #include "distributed/rank_particles.hpp"
 
+#include "core/particle_order.hpp"
+
 namespace arksph::distributed {
 
 RankParticles::RankParticles(const ParticleSet& all, const StateLayout& layout, const double* y,
@@ -66,6 +68,16 @@ void RankParticles::load(const double* y) {
   }
   if (ix_.density) take(ix_.rho(), L.rho());
   if (ix_.energy) take(ix_.e(), L.energy());
+}
+
+void RankParticles::sort_by_cell(const double* lo, double side) {
+  const std::size_t n = p_.size();
+  const double* y = ix_.dim == 2 ? p_.field[static_cast<std::size_t>(ix_.seen(1))].data() : nullptr;
+  const Permutation from =
+      cell_order(p_.field[static_cast<std::size_t>(ix_.seen(0))].data(), y, n, lo[0], ix_.dim == 2 ? lo[1] : 0.0, side);
+  permute(p_.id, from);
+  for (auto& f : p_.field) permute(f, from);
+  refresh_ids();
 }
 
 void RankParticles::refresh_ids() { ids_.assign(p_.id.begin(), p_.id.end()); }

@@ -55,6 +55,11 @@ class RankParticles {
   void load(const double* y);
   // After a migration: the ids follow the records.
   void refresh_ids();
+  // The particles re-ordered by cell of side `side` (row-major from `lo`, core/particle_order.hpp)
+  // of their seen positions, as one process re-sorts its particles (method.reorder_every), so that
+  // neighbours are close in memory: at a deal and after each migration, before the integrator
+  // takes the state. Deterministic: the same particles in the same order give the same result.
+  void sort_by_cell(const double* lo, double side);
 
  private:
   RankFieldIndex ix_;

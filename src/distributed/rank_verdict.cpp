@@ -1,14 +1,23 @@
 #include "distributed/rank_verdict.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace arksph::distributed {
 
 Verdict agree(const parallel::Communicator& comm, const Verdict& mine) {
+  std::int64_t none = 0;
+  return agree(comm, mine, none);
+}
+
+Verdict agree(const parallel::Communicator& comm, const Verdict& mine, std::int64_t& flag) {
   Verdict v;
   // Ranked by code, then by whether the message names the particle.
   const std::int64_t key = 2 * static_cast<std::int64_t>(mine.code) + (mine.names_particle ? 1 : 0);
-  const std::int64_t best = comm.max(key);
+  std::vector<std::int64_t> both{key, flag};
+  comm.max_in_place(both);
+  const std::int64_t best = both[0];
+  flag = both[1];
   v.code = static_cast<int>(best / 2);
   v.names_particle = best % 2 == 1;
   if (v.code == 0) return v;

@@ -5,6 +5,7 @@
 // failure on one rank thus ends every rank with the same exit code at the same point, and no rank is
 // left waiting in a collective call.
 #pragma once
+#include <cstdint>
 #include <string>
 
 #include "parallel/communicator.hpp"
@@ -21,5 +22,8 @@ struct Verdict {
 
 // Collective.
 Verdict agree(const parallel::Communicator& comm, const Verdict& mine);
+// The same, and `flag` replaced by its largest value over the ranks in the same collective (one
+// all-reduce while no rank fails): the step's wall reflections ride with the step's verdict.
+Verdict agree(const parallel::Communicator& comm, const Verdict& mine, std::int64_t& flag);
 
 }  // namespace arksph::distributed

@@ -24,6 +24,12 @@ constexpr int kInterpExtI = 6;           // extended+i interpolation, the partne
 constexpr int kInterpMaxElements = 4;    // truncation of interpolation rows (operator complexity)
 constexpr double kStrongThreshold = 0.25;  // strength of connection for 2D Laplacians
 constexpr int kRelaxL1SymmetricGs = 8;   // l1 hybrid symmetric Gauss-Seidel: a symmetric preconditioner for PCG
+// Reuse of the hierarchy (the header), cg_amg's constants and measured choice.
+constexpr double kGrowth = 1.25;  // set up anew when iterations exceed this x the count after the last set-up
+constexpr int kMaxReuse = 25;     // ... or after this many solves
+
+// PCG's preconditioner set-up while the hierarchy is reused: nothing to do.
+HYPRE_Int keep_hierarchy(HYPRE_Solver, HYPRE_Matrix, HYPRE_Vector, HYPRE_Vector) { return 0; }
 
 void check(HYPRE_Int err, const char* what) {
   if (err != 0) {
@@ -45,14 +51,14 @@ HYPRE_BigInt big(GlobalRow r) {
   return static_cast<HYPRE_BigInt>(r);
 }
 
-// The IJ objects of one solve, destroyed on every path out.
+// The IJ objects of one solve, destroyed on every path out (the matrix unless a new hierarchy
+// keeps it).
 struct IjSystem {
   HYPRE_IJMatrix A = nullptr;
   HYPRE_IJVector b = nullptr, x = nullptr, r = nullptr;
-  HYPRE_Solver pcg = nullptr, amg = nullptr;
+  HYPRE_Solver pcg = nullptr;
   ~IjSystem() {
     if (pcg) HYPRE_ParCSRPCGDestroy(pcg);
-    if (amg) HYPRE_BoomerAMGDestroy(amg);
     if (r) HYPRE_IJVectorDestroy(r);
     if (x) HYPRE_IJVectorDestroy(x);
     if (b) HYPRE_IJVectorDestroy(b);
@@ -72,6 +78,16 @@ void make_vector(MPI_Comm comm, HYPRE_BigInt lo, HYPRE_BigInt hi, const std::vec
 
 }  // namespace
 
+// BoomerAMG set up on `A`, which it keeps (its finest level points at it until a solve passes another).
+struct HyprePoisson::Hierarchy {
+  HYPRE_Solver amg = nullptr;
+  HYPRE_IJMatrix A = nullptr;
+  ~Hierarchy() {
+    if (amg) HYPRE_BoomerAMGDestroy(amg);
+    if (A) HYPRE_IJMatrixDestroy(A);
+  }
+};
+
 HyprePoisson::HyprePoisson(const parallel::Communicator& comm, double tolerance) : comm_(comm), tolerance_(tolerance) {
   static std::once_flag init;
   std::call_once(init, [] { HYPRE_Init(); });
@@ -84,13 +100,17 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
   const std::size_t n = rows.size();
   if (p.size() != n) p.assign(n, 0.0);
   HypreSolveReport rep;
-  double nb2 = 0;
-  for (double v : rows.b) nb2 += v * v;
-  nb2 = comm_.sum(nb2);
+  // |b|^2 and whether any rank's row range changed since the set-up, in one all-reduce.
+  std::vector<double> sums{0.0, 0.0};
+  for (double v : rows.b) sums[0] += v * v;
+  sums[1] = rows.range.first != first_ || rows.range.total != total_ || n != rows_ ? 1.0 : 0.0;
+  comm_.sum_in_place(sums);
+  const double nb2 = sums[0];
   if (nb2 == 0) {  // zero source: the solution is zero (as cg_amg)
     std::fill(p.begin(), p.end(), 0.0);
     return rep;
   }
+  const bool setup = !amg_ || must_setup_ || sums[1] > 0 || solves_since_setup_ >= kMaxReuse;
   const MPI_Comm comm = comm_.comm();
   // Empty ranks own the empty range [first, first - 1].
   const HYPRE_BigInt lo = big(rows.range.first), hi = big(rows.range.first + static_cast<GlobalRow>(n)) - 1;
@@ -125,16 +145,31 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
   check(HYPRE_IJVectorGetObject(s.b, reinterpret_cast<void**>(&b)), "IJVectorGetObject");
   check(HYPRE_IJVectorGetObject(s.x, reinterpret_cast<void**>(&x)), "IJVectorGetObject");
 
-  check(HYPRE_BoomerAMGCreate(&s.amg), "BoomerAMGCreate");
-  HYPRE_BoomerAMGSetPrintLevel(s.amg, 0);
-  HYPRE_BoomerAMGSetCoarsenType(s.amg, kCoarsenHmis);
-  HYPRE_BoomerAMGSetInterpType(s.amg, kInterpExtI);
-  HYPRE_BoomerAMGSetPMaxElmts(s.amg, kInterpMaxElements);
-  HYPRE_BoomerAMGSetStrongThreshold(s.amg, kStrongThreshold);
-  HYPRE_BoomerAMGSetRelaxType(s.amg, kRelaxL1SymmetricGs);
-  HYPRE_BoomerAMGSetNumSweeps(s.amg, 1);
-  HYPRE_BoomerAMGSetTol(s.amg, 0.0);  // preconditioner: exactly one V-cycle
-  HYPRE_BoomerAMGSetMaxIter(s.amg, 1);
+  if (setup) {  // a new hierarchy, which keeps this solve's matrix
+    amg_.reset();
+    auto h = std::make_unique<Hierarchy>();
+    check(HYPRE_BoomerAMGCreate(&h->amg), "BoomerAMGCreate");
+    HYPRE_BoomerAMGSetPrintLevel(h->amg, 0);
+    HYPRE_BoomerAMGSetCoarsenType(h->amg, kCoarsenHmis);
+    HYPRE_BoomerAMGSetInterpType(h->amg, kInterpExtI);
+    HYPRE_BoomerAMGSetPMaxElmts(h->amg, kInterpMaxElements);
+    HYPRE_BoomerAMGSetStrongThreshold(h->amg, kStrongThreshold);
+    HYPRE_BoomerAMGSetRelaxType(h->amg, kRelaxL1SymmetricGs);
+    HYPRE_BoomerAMGSetNumSweeps(h->amg, 1);
+    HYPRE_BoomerAMGSetTol(h->amg, 0.0);  // preconditioner: exactly one V-cycle
+    HYPRE_BoomerAMGSetMaxIter(h->amg, 1);
+    h->A = s.A;
+    s.A = nullptr;
+    amg_ = std::move(h);
+    first_ = rows.range.first;
+    total_ = rows.range.total;
+    rows_ = n;
+    must_setup_ = true;  // until PCG's set-up below has built the hierarchy
+    solves_since_setup_ = 0;
+    baseline_ = -1;
+    ++setups_;
+  }
+  rep.refactored_symbolic = setup;
 
   check(HYPRE_ParCSRPCGCreate(comm, &s.pcg), "ParCSRPCGCreate");
   const GlobalRow max_it = std::max<GlobalRow>(200, rows.range.total);  // as cg_amg
@@ -145,8 +180,9 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
   HYPRE_PCGSetPrintLevel(s.pcg, 0);
   HYPRE_PCGSetLogging(s.pcg, 0);
   HYPRE_PCGSetPrecond(s.pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
-                      reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup), s.amg);
+                      setup ? reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup) : keep_hierarchy, amg_->amg);
   check(HYPRE_ParCSRPCGSetup(s.pcg, A, b, x), "PCG setup");
+  must_setup_ = false;
   rep.setup_seconds = since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   const HYPRE_Int solved = HYPRE_ParCSRPCGSolve(s.pcg, A, b, x);
@@ -154,6 +190,11 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
   HYPRE_Int it = 0;
   HYPRE_PCGGetNumIterations(s.pcg, &it);
   rep.iterations = it;
+  ++solves_since_setup_;
+  if (baseline_ < 0)
+    baseline_ = rep.iterations;
+  else if (rep.iterations > std::max(kGrowth * baseline_, baseline_ + 2.0))  // +2: not on noise of small counts
+    must_setup_ = true;
   if (solved != 0 && !HYPRE_CheckError(solved, HYPRE_ERROR_CONV)) check(solved, "PCG solve");
   HYPRE_ClearAllErrors();
   if (n > 0) check(HYPRE_IJVectorGetValues(s.x, static_cast<HYPRE_Int>(n), idx.data(), p.data()), "IJVectorGetValues");

@@ -62,6 +62,16 @@ std::int64_t Communicator::max(std::int64_t x) const {
   return r;
 }
 
+void Communicator::max_in_place(std::vector<double>& v) const {
+  check_mpi_count(v.size() * sizeof(double));
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX, comm_);
+}
+
+void Communicator::max_in_place(std::vector<std::int64_t>& v) const {
+  check_mpi_count(v.size() * sizeof(std::int64_t));
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_INT64_T, MPI_MAX, comm_);
+}
+
 void Communicator::sum_in_place(std::vector<std::int64_t>& v) const {
   check_mpi_count(v.size() * sizeof(std::int64_t));
   MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_INT64_T, MPI_SUM, comm_);

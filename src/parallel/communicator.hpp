@@ -42,6 +42,9 @@ class Communicator {
   std::int64_t sum(std::int64_t x) const;
   std::uint64_t sum(std::uint64_t x) const;  // modulo 2^64 (checksums)
   double max(double x) const;
+  // Element-wise maximum over the ranks, in place: several maxima in one collective.
+  void max_in_place(std::vector<double>& v) const;
+  void max_in_place(std::vector<std::int64_t>& v) const;
   std::int64_t max(std::int64_t x) const;
   // Element-wise sum over the ranks, in place (every rank gets the result).
   void sum_in_place(std::vector<std::int64_t>& v) const;
@@ -73,6 +76,30 @@ class Communicator {
     if (rank_ == root) all.resize(displacements(counts, displ) / sizeof(T));
     MPI_Gatherv(local.data(), mine, MPI_BYTE, all.data(), counts.data(), displ.data(), MPI_BYTE, root, comm_);
     return all;
+  }
+  // All-to-all exchange whose receive counts the caller knows (receive[r] records from rank r, as
+  // the sender's send[q] for this rank q): one MPI_Alltoallv, no exchange of counts. Returns what
+  // arrived, concatenated in source-rank order. A sender that sends more than announced is an
+  // MPI error (truncation).
+  template <class T>
+  std::vector<T> alltoallv_known(const std::vector<std::vector<T>>& send, const std::vector<std::size_t>& receive) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    if (send.size() != static_cast<std::size_t>(size_) || receive.size() != send.size())
+      throw std::invalid_argument("alltoallv_known: one send buffer and one count per rank expected");
+    std::vector<T> flat;
+    std::vector<int> scount(send.size()), sdispl(send.size()), rcount(send.size()), rdispl(send.size());
+    for (std::size_t r = 0; r < send.size(); ++r) {
+      check_mpi_count(send[r].size() * sizeof(T));
+      check_mpi_count(receive[r] * sizeof(T));
+      scount[r] = static_cast<int>(send[r].size() * sizeof(T));
+      rcount[r] = static_cast<int>(receive[r] * sizeof(T));
+      flat.insert(flat.end(), send[r].begin(), send[r].end());
+    }
+    displacements(scount, sdispl);
+    std::vector<T> recv(displacements(rcount, rdispl) / sizeof(T));
+    MPI_Alltoallv(flat.data(), scount.data(), sdispl.data(), MPI_BYTE, recv.data(), rcount.data(), rdispl.data(),
+                  MPI_BYTE, comm_);
+    return recv;
   }
   // All-to-all exchange: send[r] goes to rank r; returns what arrived, concatenated in source-rank
   // order, and the number of records from each source in `received_per_rank` (if not null).

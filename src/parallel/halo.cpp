@@ -1,5 +1,6 @@
 #include "parallel/halo.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -94,14 +95,23 @@ void HaloExchange::exchange(const Communicator& comm, const Domain& domain, cons
 
 void HaloExchange::update(const Communicator& comm, const ParticleFields& owned, const std::vector<int>& fields,
                           ParticleFields& halo) const {
+  update_max(comm, owned, fields, halo, 0.0);
+}
+
+double HaloExchange::update_max(const Communicator& comm, const ParticleFields& owned, const std::vector<int>& fields,
+                                ParticleFields& halo, double local) const {
   if (halo.size() != received_ || send_.size() != static_cast<std::size_t>(comm.size()))
     throw std::invalid_argument("halo update: not the halo of the last exchange");
   for (int f : fields)
     if (f < 0 || static_cast<std::size_t>(f) >= owned.n_fields()) throw std::invalid_argument("halo update: no such field");
+  // Per destination: `local`, then the values of each listed copy.
+  const std::size_t nf = fields.size();
   std::vector<std::vector<double>> records(send_.size());
+  std::vector<std::size_t> receive(send_.size());
   for (std::size_t r = 0; r < send_.size(); ++r) {
     auto& out = records[r];
-    out.reserve(send_[r].size() * fields.size());
+    out.reserve(1 + send_[r].size() * nf);
+    out.push_back(local);
     for (const Entry& e : send_[r]) {
       if (e.index >= owned.size()) throw std::invalid_argument("halo update: fewer particles than at the exchange");
       for (int f : fields) {
@@ -109,15 +119,17 @@ void HaloExchange::update(const Communicator& comm, const ParticleFields& owned,
         out.push_back(f < owned.dim ? v + shifts_[e.shift][static_cast<std::size_t>(f)] : v);
       }
     }
+    receive[r] = 1 + received_per_rank_[r] * nf;
   }
-  std::vector<std::size_t> per_rank;
-  const std::vector<double> received = comm.alltoallv(records, &per_rank);
-  for (std::size_t r = 0; r < per_rank.size(); ++r)
-    if (per_rank[r] != received_per_rank_[r] * fields.size())
-      throw std::logic_error("halo update: the ranks disagree on the send lists");
-  const std::size_t nf = fields.size();
-  for (std::size_t k = 0; k < received_; ++k)
-    for (std::size_t j = 0; j < nf; ++j) halo.field[static_cast<std::size_t>(fields[j])][k] = received[k * nf + j];
+  const std::vector<double> received = comm.alltoallv_known(records, receive);
+  double largest = local;
+  std::size_t at = 0, k = 0;
+  for (std::size_t r = 0; r < send_.size(); ++r) {
+    largest = std::max(largest, received[at++]);  // NaN from a rank is not larger: as Communicator::max on one rank
+    for (std::size_t c = 0; c < received_per_rank_[r]; ++c, ++k)
+      for (std::size_t j = 0; j < nf; ++j) halo.field[static_cast<std::size_t>(fields[j])][k] = received[at++];
+  }
+  return largest;
 }
 
 std::size_t HaloExchange::sent() const {

@@ -41,8 +41,14 @@ class HaloExchange {
   // Collective. Sends the current values of `fields` (indices into ParticleFields::field) of the same
   // particles, with the same shifts added to the coordinates among them, into the same halo slots.
   // `owned` must hold the particles of the last exchange at the same indices (no migration since).
+  // One MPI_Alltoallv with the counts of the last exchange (no exchange of counts).
   void update(const Communicator& comm, const ParticleFields& owned, const std::vector<int>& fields,
               ParticleFields& halo) const;
+  // The same, and `local` sent to every rank along with the values: returns the largest `local`
+  // over the ranks (every rank the same value) without a collective of its own. A decomposed run
+  // sends its largest displacement since the exchange this way (distributed/halo_rhs.hpp).
+  double update_max(const Communicator& comm, const ParticleFields& owned, const std::vector<int>& fields,
+                    ParticleFields& halo, double local) const;
 
   std::size_t sent() const;  // copies sent by this rank (own periodic images included)
   std::size_t received() const { return received_; }

@@ -113,6 +113,43 @@ void RhsEvaluator::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(implicit_v_, from);
 }
 
+void RhsEvaluator::replace_particles(ParticleSet particles) {
+  neighbors_.invalidate();  // the storage stays for the next list; the next eval rebuilds
+  particles_ = std::move(particles);
+  const std::size_t n = particles_.n;
+  layout_.n = n;
+  fields_.n_real = n;
+  fields_.rho0 = particles_.rho0;
+  fields_.dudt.assign(n, 0.0);
+  fields_.dvdt.assign(n, 0.0);
+  fields_.drhodt.assign(n, 0.0);
+  if (layout_.has_energy) fields_.dedt.assign(n, 0.0);
+  implicit_u_.clear();
+  implicit_v_.clear();
+}
+
+void RhsEvaluator::release_storage() {
+  neighbors_.release();
+  FluidFields& f = fields_;
+  f.pairs = PairList{};
+  // Filled by load_state, the ghosts' rebuild (GhostField::refresh) and the force stage.
+  for (auto* v : {&f.x, &f.y, &f.u, &f.v, &f.ud, &f.vd, &f.rho, &f.p, &f.m, &f.vol, &f.mu, &f.flip_x, &f.flip_y})
+    std::vector<double>().swap(*v);
+  std::vector<std::uint32_t>().swap(f.src);
+  f.n_all = 0;
+}
+
+void RhsEvaluator::release_particles() {
+  release_storage();
+  ParticleSet& p = particles_;
+  for (auto* v : {&p.mass, &p.rho0, &p.init_pos[0], &p.init_pos[1], &p.init_vel[0], &p.init_vel[1], &p.init_rho})
+    std::vector<double>().swap(*v);
+  std::vector<std::int64_t>().swap(p.id);
+  std::vector<std::int32_t>().swap(p.phase);
+  for (auto* v : {&fields_.rho0, &fields_.dudt, &fields_.dvdt, &fields_.drhodt, &fields_.dedt})
+    std::vector<double>().swap(*v);
+}
+
 void RhsEvaluator::initial_state(double* y) const {
   const std::size_t n = layout_.n;
   for (int k = 0; k < layout_.dim; ++k) {

@@ -78,6 +78,19 @@ class RhsEvaluator {
   // constant per-particle data follow, the neighbour list and ghosts are rebuilt at the next eval.
   // The state vector is the caller's to permute; fields() are stale until the next eval.
   void permute_particles(const std::vector<std::uint32_t>& from);
+  // Another set of particles in place of the current one (any count; the scene, kernel and terms
+  // stay): one rank's particles and halo after a new halo exchange (distributed/halo_rhs.hpp). The
+  // constant per-particle data and the state size follow; the neighbour list and ghosts are built
+  // at the next eval, into the storage of the old ones. fields() are stale until then.
+  void replace_particles(ParticleSet particles);
+  // Frees the neighbour list, the stored pairs and the per-point fields that the next eval fills
+  // anew (it rebuilds the list and the ghosts): a caller that will not evaluate for a while (the
+  // whole model of a decomposed run between output frames). fields() are empty until then.
+  void release_storage();
+  // release_storage, and the per-particle data besides: only layout(), kernel() and the counters
+  // stay usable, and eval must not be called again (the whole model of a decomposed run on the
+  // ranks that never evaluate it).
+  void release_particles();
   const RhsTiming& timing() const { return timing_; }
 
   // f_I of the last eval() with options().imex_split: zero except the velocity block, which holds

@@ -199,11 +199,11 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   const double ppe = reported ? ppe_stats_.seconds : model_.projection ? model_.projection->stats().seconds : 0.0;
   timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);
   timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
+  if (stepping_seconds_ >= 0) timing.set("stepping", stepping_seconds_);
   if (reorders_ >= 0) {
     timing.set("reorder", reorder_seconds_);
     j.set("reorders", reorders_);
   }
-  // What is left: set-up, ARKODE's own vector work, state checks.
   // What is left: set-up, ARKODE's own vector work, state checks. (ppe includes its own neighbour
   // refresh, counted in neighbors and rhs too, so it is not subtracted.)
   timing.set("setup_and_integrator", wall_seconds - rt.neighbors - rt.terms - diagnostic_seconds_ - output_seconds_);

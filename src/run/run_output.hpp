@@ -53,6 +53,9 @@ class RunOutput {
     reorders_ = count;
     reorder_seconds_ = seconds;
   }
+  // summary.json timing.stepping: the wall time of the steps alone (each step with its checks,
+  // reflections and re-sorts or migrations), without set-up, frames and checkpoints.
+  void set_stepping_seconds(double seconds) { stepping_seconds_ = seconds; }
 
  private:
   std::vector<std::string> csv_columns() const;
@@ -74,6 +77,7 @@ class RunOutput {
   Json mpi_ = Json::object().set("ranks", 1);
   long reorders_ = -1;  // -1: re-sorting off
   int pieces_ = 0;      // 0: whole frames; else the ranks whose pieces a frame's index names
+  double stepping_seconds_ = -1;  // not set: no timing.stepping
   double reorder_seconds_ = 0;
   std::string ppe_solver_;  // empty: the model's projection reports itself
   ProjectionStats ppe_stats_;

@@ -143,6 +143,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   int frame = checkpoints.first_frame();
   int tiny_steps = 0;  // adaptive steps in a row below the underflow floor (check_step_size)
   RunResult result;
+  double stepping = 0;  // the steps alone (summary.json timing.stepping)
   try {
     // Output at t = 0, every `every`, and the end time exactly.
     if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
@@ -155,6 +156,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
       if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
       double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
       while (t < t_next) {
+        const auto step_start = clock::now();
         if (model.projection) model.projection->begin_step(t, integrator.state());
         const double stop = checkpoints.limit(t_next);
         t = integrator.step(stop);  // checkpoint times are stop times too
@@ -172,6 +174,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
                                  std::to_string(t) + " before time.end");
         progress.step(t, st.steps, st.last_step);
         if (const int sig = pending_interrupt()) throw Interrupted{sig};
+        stepping += std::chrono::duration<double>(clock::now() - step_start).count();
         if (t < t_next) checkpoints.at(t, integrator, rhs, frame, reflections);
       }
       const long before = rhs.evaluations();
@@ -216,6 +219,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const ErkStats st = integrator.stats();
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   if (scene.reorder_every > 0) out.set_reorders(reorder.count(), reorder.seconds());
+  out.set_stepping_seconds(stepping);
   try {
     out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
   } catch (const OutputError& e) {

@@ -9,7 +9,11 @@
 
 namespace arksph {
 
-StateChecker::StateChecker(const Scene& scene, const Model& model) : scene_(scene), model_(model) {
+StateChecker::StateChecker(const Scene& scene, const Model& model)
+    : StateChecker(scene, model, model.rhs->max_acceleration()) {}
+
+StateChecker::StateChecker(const Scene& scene, const Model& model, double max_acceleration)
+    : scene_(scene), model_(model) {
   // Bound on the speed: 100 x the largest physical speed scale of the scene (sound speed for wcsph,
   // wall speeds, initial speeds, sqrt(|f| L)); a run beyond it has blown up.
   double u_ref = model.sound_speed;
@@ -17,7 +21,7 @@ StateChecker::StateChecker(const Scene& scene, const Model& model) : scene_(scen
     u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
   for (int k = 0; k < scene.dimension; ++k)
     for (double u : model.particles.init_vel[k]) u_ref = std::max(u_ref, std::abs(u));
-  u_ref = std::max(u_ref, 10.0 * std::sqrt(model.rhs->max_acceleration() * (scene.max[0] - scene.min[0])));
+  u_ref = std::max(u_ref, 10.0 * std::sqrt(max_acceleration * (scene.max[0] - scene.min[0])));
   speed_limit_ = 100.0 * std::max(u_ref, 1e-6);
   margin_ = model.rhs->kernel().radius();
 }

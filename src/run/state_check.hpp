@@ -12,6 +12,9 @@ namespace arksph {
 class StateChecker {
  public:
   StateChecker(const Scene& scene, const Model& model);
+  // The same with the largest acceleration at t = 0 given (a decomposed run: from rank 0's whole
+  // model) instead of read from model.rhs.
+  StateChecker(const Scene& scene, const Model& model, double max_acceleration);
   void check(double t, const double* y) const;
   // The same for a state y in `layout` whose particles have the ids `ids` (one rank's particles of a
   // decomposed run).

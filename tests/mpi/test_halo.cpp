@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 #include "mpi_test_support.hpp"
@@ -115,6 +116,19 @@ TEST_CASE("halo: equals the brute-force halo from all particles; the update move
                   halo.field[RHO][k] == value_of(halo.id[k], RHO, 1) && halo.field[U][k] == value_of(halo.id[k], U, 0);
     }
     CHECK(on_all_ranks(comm, update_ok));
+
+    // (d) update_max: the same values into the same slots, and the largest of each rank's number
+    // (here 10 + rank, so the last rank's) on every rank; a halo of another size is refused.
+    ParticleFields again = old_halo;
+    const double largest = exchange.update_max(comm, p, {X, Y, RHO}, again, 10.0 + comm.rank());
+    CHECK(largest == 10.0 + (comm.size() - 1));
+    bool same = true;
+    for (int f : {X, Y, RHO, U})
+      same = same && again.field[static_cast<std::size_t>(f)] == halo.field[static_cast<std::size_t>(f)];
+    CHECK(on_all_ranks(comm, same));
+    ParticleFields wrong = old_halo;
+    wrong.resize(old_halo.size() + 1);
+    CHECK_THROWS_AS(exchange.update_max(comm, p, {X}, wrong, 0.0), std::invalid_argument);
   }
 }
 

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "distributed/rank_verdict.hpp"
 #include "projection/ppe_assembly.hpp"
+#include "projection/velocity_correction.hpp"
 
 namespace arksph::distributed {
 
@@ -171,19 +172,7 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
 
   // Velocity correction, C&R eq. 11 (ghosts carry their source's P, plus the hydrostatic step under
   // a body force: FluidFields::point_pressure).
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    const double pa = p_all[a] / (f.rho[a] * f.rho[a]);
-    double gx = 0, gy = 0;
-    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double pb = f.point_pressure(p_all, b) / (f.rho[b] * f.rho[b]);
-      const double c = f.m[b] * (pb + pa) * F;
-      gx += c * rx;
-      gy += c * ry;
-    });
-    u[a] -= dt * gx;
-    if (v) v[a] -= dt * gy;
-  }
+  subtract_pressure_gradient(f, p_all, dt, n, u, v);
 }
 
 }  // namespace arksph::distributed

@@ -9,6 +9,7 @@
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
 #include "projection/ppe_assembly.hpp"
+#include "projection/velocity_correction.hpp"
 
 namespace arksph {
 
@@ -244,19 +245,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   // 3. Velocity correction, C&R eq. 11.
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    const double pa = pressure_[a] / (f.rho[a] * f.rho[a]);
-    double gx = 0, gy = 0;
-    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double pb = f.point_pressure(pressure_, b) / (f.rho[b] * f.rho[b]);
-      const double c = f.m[b] * (pb + pa) * F;
-      gx += c * rx;
-      gy += c * ry;
-    });
-    u[a] -= dt * gx;
-    if (v) v[a] -= dt * gy;
-  }
+  subtract_pressure_gradient(f, pressure_, dt, n, u, v);
 }
 
 void Projection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {

@@ -108,7 +108,18 @@ def check_file(path):
         expected_state = ["x", "y", "u", "v"] if dim == 2 else ["x", "u"]
         if has_rho:
             expected_state.append("rho")
-        require(set(f.keys()) == {"state", "particles"}, f"root groups {sorted(f.keys())}")
+        groups = set(f.keys())
+        require(groups in ({"state", "particles"}, {"state", "particles", "diagnostics"}), f"root groups {sorted(groups)}")
+        if "diagnostics" in groups:  # the steady-state monitor's samples: rows of steady_columns values
+            g = f["diagnostics"]
+            cols = int(g.attrs["steady_columns"])
+            samples = g["steady_samples"]
+            require(cols >= 2, f"steady_columns = {cols}")
+            require(samples.ndim == 1 and samples.shape[0] % cols == 0 and samples.shape[0] > 0,
+                    f"steady_samples has shape {samples.shape}, not rows of {cols}")
+            rows = samples[:].reshape(-1, cols)
+            require(np.all(np.diff(rows[:, 0]) > 0) and rows[-1, 0] <= a["time"] + 1e-9,
+                    "steady sample times not increasing up to the checkpoint time")
         require(sorted(f["state"].keys()) == sorted(expected_state),
                 f"/state holds {sorted(f['state'].keys())}, expected {sorted(expected_state)}")
         require(sorted(f["particles"].keys()) == sorted(PARTICLE_SETS),
@@ -136,7 +147,8 @@ def make_checkpoints(binary, workdir):
     with open(scene_1d, "w") as out:
         out.write(ONE_D_SCENE)
     runs = [
-        ["run", "--quiet", "--out", os.path.join(workdir, "cavity"), "--set", "time.end=0.01"],
+        ["run", "--quiet", "--out", os.path.join(workdir, "cavity"), "--set", "time.end=0.01",
+         "--set", "output.every=0.002", "--set", "time.steady_tolerance=1e-9", "--set", "time.steady_window=0.004"],
         ["run", scene_1d, "--quiet", "--out", os.path.join(workdir, "one_d")],
     ]
     for args in runs:

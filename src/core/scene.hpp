@@ -104,6 +104,7 @@ struct Scene {
   double end = 1.0;
   double steady_tolerance = 0.0;  // > 0: stop at steady state (diagnostics/steady_state.hpp)
   double steady_window = 0.0;     // simulated time the steady-state rate is taken over (0: one output interval)
+  std::string steady_measure = "window_means";  // how the steady-state rate is taken (diagnostics/steady_state.hpp)
   std::string integrator = "ARKODE_HEUN_EULER_2_1_2";
   double dt = 0.0;        // 0: adaptive, limited by the stability function; > 0: fixed step
   double cfl = 0.25;      // coefficient of Szewc eqs. 34-35

@@ -287,7 +287,11 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   together(comm, [&] {
     if (!root) return;
     out = std::make_unique<RunOutput>(scene, model, options, run_id);
-    if (restarting) out->resume(earlier);
+    if (restarting) {
+      out->resume(earlier);
+      out->restore_steady(checkpoints->restart().steady_samples, checkpoints->restart().steady_columns);
+    }
+    checkpoints->set_steady_monitor(&out->steady_monitor());
   });
   if (root && integrator->workaround_installed()) out->add_term("erkstep:fsal_bug_workaround");
   const long diag_before = rhs.evaluations();

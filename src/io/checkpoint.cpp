@@ -188,6 +188,14 @@ std::vector<unsigned char> file_image(const Checkpoint& c) {
     write_array(particles, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, c.id.data(), c.n);
     write_array(particles, "phase", H5T_STD_I32LE, H5T_NATIVE_INT32, c.phase.data(), c.n);
   }
+  if (!c.steady_samples.empty()) {
+    if (c.steady_columns < 2 || c.steady_samples.size() % static_cast<std::size_t>(c.steady_columns) != 0)
+      throw std::logic_error("write_checkpoint: steady samples are not rows of steady_columns >= 2 values");
+    Hid diagnostics(H5Gcreate2(file, "diagnostics", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                    "group diagnostics");
+    write_int32(diagnostics, "steady_columns", c.steady_columns);
+    write_doubles(diagnostics, "steady_samples", c.steady_samples.data(), c.steady_samples.size());
+  }
   check(H5Fflush(file, H5F_SCOPE_GLOBAL), "H5Fflush");
   const ssize_t size = H5Fget_file_image(file, nullptr, 0);
   if (size <= 0) throw std::runtime_error("H5Fget_file_image: " + hdf5_reason());
@@ -291,6 +299,27 @@ void read_array(hid_t group, const std::string& where, const char* name, hid_t m
   if (n > 0) check(H5Dread(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "dataset " + label);
 }
 
+// The optional /diagnostics group: the steady-state samples, rows of steady_columns values.
+void read_steady_samples(hid_t file, Checkpoint& c) {
+  Hid diagnostics(H5Gopen2(file, "diagnostics", H5P_DEFAULT), H5Gclose, "group /diagnostics");
+  const long columns = read_int64(diagnostics, "steady_columns");
+  if (columns < 2 || columns > 100000) throw std::runtime_error("steady_columns = " + std::to_string(columns));
+  const char* name = "steady_samples";
+  if (H5Lexists(diagnostics, name, H5P_DEFAULT) <= 0) throw std::runtime_error("dataset /diagnostics/steady_samples missing");
+  Hid dset(H5Dopen2(diagnostics, name, H5P_DEFAULT), H5Dclose, "dataset /diagnostics/steady_samples");
+  Hid space(H5Dget_space(dset), H5Sclose, "dataset /diagnostics/steady_samples");
+  hsize_t dims[1] = {0};
+  if (H5Sget_simple_extent_ndims(space) != 1)
+    throw std::runtime_error("dataset /diagnostics/steady_samples is not one-dimensional");
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  if (dims[0] % static_cast<hsize_t>(columns) != 0 || dims[0] > (hsize_t{1} << 28))
+    throw std::runtime_error("dataset /diagnostics/steady_samples has " + std::to_string(dims[0]) +
+                             " values, not rows of " + std::to_string(columns));
+  c.steady_columns = static_cast<int>(columns);
+  c.steady_samples.resize(dims[0]);
+  read_array(diagnostics, "/diagnostics", name, H5T_NATIVE_DOUBLE, c.steady_samples.data(), c.steady_samples.size());
+}
+
 Checkpoint read_file(const std::string& path) {
   if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("not a regular file");
@@ -350,6 +379,7 @@ Checkpoint read_file(const std::string& path) {
     read_array(particles, "/particles", "id", H5T_NATIVE_INT64, c.id.data(), c.n);
     read_array(particles, "/particles", "phase", H5T_NATIVE_INT32, c.phase.data(), c.n);
   }
+  if (H5Lexists(file, "diagnostics", H5P_DEFAULT) > 0) read_steady_samples(file, c);
   file.close("H5Fclose");
   return c;
 }

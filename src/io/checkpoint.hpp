@@ -1,7 +1,8 @@
 // HDF5 checkpoint: everything an exact restart needs (layout: io/checkpoint_layout.md).
 //   - the ODE state vector y, block by block as StateLayout lays it out (x, y, u, v, rho);
 //   - the constant per-particle data (mass, rho0, id, phase);
-//   - the resolved scene as TOML text, the time, the integrator counters and the output counters.
+//   - the resolved scene as TOML text, the time, the integrator counters and the output counters;
+//   - the steady-state monitor's samples, when the run has one.
 // The file is built in memory, written to a temporary beside `path` (temporary_path), synced and
 // renamed onto `path`, so a reader sees either the previous checkpoint or the new one, never a
 // partial file.
@@ -38,6 +39,11 @@ struct Checkpoint {
   std::vector<double> mass, rho0;
   std::vector<std::int64_t> id;
   std::vector<std::int32_t> phase;
+  // The steady-state monitor's samples (diagnostics/steady_state.hpp), so that a restart measures
+  // the same windows as the run it continues: rows of (t, KE, centreline values...), row-major,
+  // steady_columns values each. Empty without time.steady_tolerance (and in files that lack them).
+  int steady_columns = 0;
+  std::vector<double> steady_samples;
 
   StateLayout layout() const {
     StateLayout L;

@@ -58,6 +58,11 @@ void check_progress(const std::map<std::string, Section>& sections, const Scene&
   if (s.steady_tolerance > 0 && s.every <= 0)
     time.fail("steady_tolerance", format_number(s.steady_tolerance) +
                                       " needs output.every > 0: the steady-state rate is measured between output times");
+  if (s.steady_tolerance > 0 && s.steady_measure == "window_means" && s.steady_window > 0 && s.every > 0 &&
+      s.steady_window < s.every)
+    time.fail("steady_window", format_number(s.steady_window) + " is shorter than output.every = " +
+                                   format_number(s.every) +
+                                   ": with time.steady_measure = \"window_means\" each window must hold an output time");
   const struct {
     const char* key;
     double every;

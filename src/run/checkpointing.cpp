@@ -160,6 +160,15 @@ std::string Checkpointer::write_state(double t, const double* y, const ErkStats&
   c.rho0 = p.rho0;
   c.id = p.id;
   c.phase = p.phase;
+  if (steady_ && steady_->enabled() && !steady_->samples().empty()) {
+    const auto& samples = steady_->samples();
+    c.steady_columns = 2 + static_cast<int>(samples.front().centreline.size());
+    for (const SteadySample& s : samples) {
+      c.steady_samples.push_back(s.t);
+      c.steady_samples.push_back(s.kinetic_energy);
+      c.steady_samples.insert(c.steady_samples.end(), s.centreline.begin(), s.centreline.end());
+    }
+  }
   write_checkpoint(path_, c);
   last_written_ = t;
   return path_;

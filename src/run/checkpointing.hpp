@@ -18,6 +18,7 @@
 #include <string>
 #include <utility>
 
+#include "diagnostics/steady_state.hpp"
 #include "run/setup.hpp"
 #include "io/checkpoint.hpp"
 
@@ -43,6 +44,8 @@ class Checkpointer {
   bool restarting() const { return restart_ != nullptr; }
   // The run id stored in the checkpoints this run writes (run/output_folder.hpp).
   void set_run_id(std::string id) { run_id_ = std::move(id); }
+  // The steady-state monitor whose samples each checkpoint stores (null: none).
+  void set_steady_monitor(const SteadyStateMonitor* m) { steady_ = m; }
   const Checkpoint& restart() const { return *restart_; }
   double start_time() const { return restart_ ? restart_->time : 0.0; }
   // Index of the next output frame (frame * output.every) at the start of the run.
@@ -78,6 +81,7 @@ class Checkpointer {
   const Checkpoint* restart_;
   std::string path_;
   std::string run_id_;
+  const SteadyStateMonitor* steady_ = nullptr;
   double every_ = 0;
   long next_ = 1;              // index k of the next scheduled checkpoint time k * every
   double last_written_ = -1;   // time of the last checkpoint written by this run

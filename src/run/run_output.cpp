@@ -30,12 +30,20 @@ double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), 
 
 RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id)
     : scene_(scene), model_(model), options_(options), run_id_(std::move(run_id)),
-      steady_(scene.steady_tolerance, scene.steady_window) {
+      steady_(scene.steady_tolerance, scene.steady_window, steady_measure_from(scene.steady_measure)) {
   if (options.write_frames) {
     pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
     pvd_->set_run_id(run_id_);
   }
   csv_.open(scene.directory + "/timeseries.csv", csv_columns());  // the folder exists (OutputFolder)
+}
+
+void RunOutput::restore_steady(const std::vector<double>& rows, int columns) {
+  if (!steady_.enabled() || columns < 2) return;
+  const std::size_t width = static_cast<std::size_t>(columns);
+  for (std::size_t r = 0; r + width <= rows.size(); r += width)
+    steady_.add({rows[r], rows[r + 1], std::vector<double>(rows.begin() + static_cast<long>(r) + 2,
+                                                           rows.begin() + static_cast<long>(r + width))});
 }
 
 std::vector<std::string> RunOutput::csv_columns() const {
@@ -243,6 +251,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   if (steady_.enabled()) {  // time.steady_tolerance: whether and when the run stopped at steady state
     Json ss = Json::object();
     ss.set("tolerance", scene_.steady_tolerance).set("window", scene_.steady_window);
+    ss.set("measure", scene_.steady_measure);
     ss.set("reached", steady_time_ >= 0).set("time", steady_time_ >= 0 ? Json(steady_time_) : Json());
     ss.set("rate", steady_.rate());
     j.set("steady_state", ss);

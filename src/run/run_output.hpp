@@ -31,6 +31,10 @@ class RunOutput {
   // time.steady_tolerance: the flow was steady at the latest output time (diagnostics/steady_state.hpp).
   bool steady() const { return steady_.steady(); }
   double steady_rate() const { return steady_.rate(); }
+  const SteadyStateMonitor& steady_monitor() const { return steady_; }
+  // Restart: the steady-state samples of the checkpoint (rows of `columns` values: t, KE,
+  // centreline...), taken up again so that the windows continue across the restart.
+  void restore_steady(const std::vector<double>& rows, int columns);
   // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
   void resume(const OutputHistory& earlier);
   // method.reorder_every: re-sorts that changed the order, and their time (summary.json).

@@ -53,8 +53,11 @@ void print_run_header(const Scene& scene, const Model& model) {
               scene.dt > 0 ? ("fixed dt " + std::to_string(scene.dt)).c_str() : "adaptive dt (stability limited)",
               scene.end);
   if (scene.steady_tolerance > 0) {  // diagnostics/steady_state.hpp
-    char window[64] = "the latest output interval";
-    if (scene.steady_window > 0) std::snprintf(window, sizeof window, "the last %g of simulated time", scene.steady_window);
+    char window[96] = "the latest output interval";
+    if (scene.steady_window > 0 && scene.steady_measure == "window_means")
+      std::snprintf(window, sizeof window, "the means of two windows of %g of simulated time", scene.steady_window);
+    else if (scene.steady_window > 0)
+      std::snprintf(window, sizeof window, "every output interval of the last %g of simulated time", scene.steady_window);
     std::printf("  stops at steady state: change rate of the kinetic energy%s below %g per unit time over %s\n",
                 scene.ghia_re ? " and the Ghia centreline velocities" : "", scene.steady_tolerance, window);
   }
@@ -102,7 +105,11 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
                                                                                checkpoints.restart().output_frame, scene.every)
                                                          : OutputHistory{};
   RunOutput out(scene, model, options, run_id);  // truncates timeseries.csv
-  if (checkpoints.restarting()) out.resume(earlier);
+  if (checkpoints.restarting()) {
+    out.resume(earlier);
+    out.restore_steady(checkpoints.restart().steady_samples, checkpoints.restart().steady_columns);
+  }
+  checkpoints.set_steady_monitor(&out.steady_monitor());
 
   ErkOptions eo = integrator_options(scene);
   eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(layout, model.particles.id, i, v); };

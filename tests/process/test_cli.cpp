@@ -68,6 +68,7 @@ TEST_CASE("cli: every malformed scene in tests/bad_scenes exits 2 with one line 
       {"zero_cfl", "time.cfl"},
       {"negative_steady_tolerance", "time.steady_tolerance"}, {"negative_steady_window", "time.steady_window"},
       {"steady_tolerance_without_output", "time.steady_tolerance"},
+      {"steady_window_shorter_than_output", "time.steady_window"},
   };
   int seen = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(ARKSPH_SOURCE_DIR) / "tests/bad_scenes")) {

@@ -13,7 +13,7 @@ ExactVelocity::ExactVelocity(const std::vector<std::string>& components) {
 }
 
 ExactVelocityErrors ExactVelocity::errors(const FluidFields& f) const {
-  double err = 0, norm = 0, peak = 0, peak_exact = 0;
+  double err = 0, norm = 0, peak = 0, peak_exact = 0, fit = 0, fit_norm = 0;
   const bool two_d = f.dim == 2 && components_.size() > 1;
   for (std::size_t a = 0; a < f.n_real; ++a) {
     const double y = two_d ? f.y[a] : 0.0;
@@ -25,10 +25,14 @@ ExactVelocityErrors ExactVelocity::errors(const FluidFields& f) const {
     norm += exact;
     peak = std::max(peak, std::hypot(f.u[a], v));
     peak_exact = std::max(peak_exact, exact);
+    const double vol = f.m[a] / f.rho[a];
+    fit += vol * (f.u[a] * ue + v * ve);
+    fit_norm += vol * exact * exact;
   }
   ExactVelocityErrors e;
   e.l1_relative = norm > 0 ? err / norm : NAN;
   e.peak_speed_error = peak_exact > 0 ? peak / peak_exact - 1.0 : NAN;
+  e.amplitude_error = fit_norm > 0 ? fit / fit_norm - 1.0 : NAN;
   return e;
 }
 

@@ -201,7 +201,8 @@ std::vector<Group> general_keys() {
             .to(&Scene::interface),
         expressions("metrics.exact_velocity", {"x", "y", "t"}).unit("m/s")
             .doc("exact velocity u(x, y, t), one expression per dimension (all 0: off): relative L1 velocity "
-                 "error and peak-speed error in timeseries.csv and summary.json")
+                 "error, peak-speed error and amplitude error (the fitted multiple of the exact field, minus 1) in "
+                 "timeseries.csv and summary.json")
             .to(&Scene::exact_velocity)},
        ""},
   };

@@ -52,7 +52,7 @@ std::vector<std::string> RunOutput::csv_columns() const {
   if (scene_.ghia_re) c.insert(c.end(), {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms"});
   if (scene_.poiseuille) c.insert(c.end(), {"tstar", "poiseuille_eps"});
   if (scene_.interface) c.insert(c.end(), {"bubble_y", "spike_y", "upper_density_mean", "upper_density_rms"});
-  if (ExactVelocity(scene_.exact_velocity).enabled()) c.insert(c.end(), {"velocity_l1_relative", "peak_speed_error"});
+  if (ExactVelocity(scene_.exact_velocity).enabled()) c.insert(c.end(), {"velocity_l1_relative", "peak_speed_error", "amplitude_error"});
   if (steady_.enabled()) c.push_back("steady_rate");
   return c;
 }
@@ -116,8 +116,9 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   }
   if (const ExactVelocity exact(scene_.exact_velocity); exact.enabled()) {
     const ExactVelocityErrors e = exact.errors(f);
-    row.insert(row.end(), {e.l1_relative, e.peak_speed_error});
+    row.insert(row.end(), {e.l1_relative, e.peak_speed_error, e.amplitude_error});
     case_metrics_.set("velocity_l1_relative", e.l1_relative).set("peak_speed_error", e.peak_speed_error);
+    case_metrics_.set("amplitude_error", e.amplitude_error);
   }
   if (steady_.enabled()) {
     if (steady_.add(std::move(sample)) && steady_time_ < 0) steady_time_ = t;
@@ -239,7 +240,8 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   metrics.set("divergence_rms", last_divergence_);
   for (const char* key : {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms", "poiseuille_rms",
                           "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2", "bubble_y", "spike_y",
-                          "upper_density_mean", "upper_density_rms", "velocity_l1_relative", "peak_speed_error"})
+                          "upper_density_mean", "upper_density_rms", "velocity_l1_relative", "peak_speed_error",
+                          "amplitude_error"})
     if (const Json* v = case_metrics_.find(key)) metrics.set(key, *v);
   j.set("metrics", metrics);
   Json params = Json::object();

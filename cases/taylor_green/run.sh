@@ -1,6 +1,7 @@
 #!/bin/sh
 # The Taylor-Green table of README.md: every scheme with and without regularisation, Re = 100 and
-# 1000, 50 x 50 and 100 x 100, to t = 2. Writes results.csv (errors at t = 1 and t = 2, wall time)
+# 1000, 50 x 50 and 100 x 100, to t = 2. Writes results.csv (relative L1, peak-speed and amplitude
+# errors at t = 1 and t = 2, wall time)
 # and, through plot.py, taylor_green.png.
 #   usage: cases/taylor_green/run.sh [ARKSPH_BINARY] [OUTPUT_ROOT]
 # SCHEMES="wcsph" (a subset of isph isph-gpps wcsph) re-runs those schemes' rows and keeps the others.
@@ -11,7 +12,7 @@ root=${2:-runs/taylor_green_table}
 mkdir -p "$root"
 csv=$here/results.csv
 schemes=${SCHEMES:-isph isph-gpps wcsph}
-header="scheme,regularisation,re,n,l1_t1,peak_t1,l1_t2,peak_t2,wall_seconds,exit_code"
+header="scheme,regularisation,re,n,l1_t1,peak_t1,l1_t2,peak_t2,wall_seconds,exit_code,amplitude_t1,amplitude_t2"
 kept=""
 [ -f "$csv" ] && kept=$(grep -v "^scheme," "$csv" | grep -v -E "^($(echo $schemes | tr ' ' '|'))," || true)
 echo "$header" > "$csv"

@@ -80,7 +80,8 @@ bool SteadyStateMonitor::add(SteadySample s) {
   const bool covered = samples_.size() >= 2 && samples_.front().t <= start;
   rate_ = std::numeric_limits<double>::quiet_NaN();
   if (samples_.size() >= 2) rate_ = means ? means_rate(t) : intervals_rate();
-  steady_ = enabled() && covered && rate_ < tolerance_;
+  // isless: a quiet comparison, since the rate is NaN until both windows hold samples.
+  steady_ = enabled() && covered && std::isless(rate_, tolerance_);
   return steady_;
 }
 

@@ -48,18 +48,25 @@ def time_dir(case, end):
     raise SystemExit(f"extract.py: no time folder {end} in {case}")
 
 
+def snap(x):
+    """A cell-centre coordinate as a grouping key: writeCellCentres prints centres with round-off in
+    their last digits, so one column's cells must not be told apart by them (1e-7 is far below the
+    spacing of any mesh used here)."""
+    return round(x, 7)
+
+
 def centreline(cells, values, along, across, component, ends):
     """Profile of values[component] along coordinate `along` on the line across = 0.5."""
-    xs = sorted({round(c[across], 12) for c in cells})
+    xs = sorted({snap(c[across]) for c in cells})
     lo = max(x for x in xs if x <= 0.5)
     hi = min(x for x in xs if x >= 0.5)
     w = 0.0 if hi == lo else (0.5 - lo) / (hi - lo)
     rows = {}
     for c, v in zip(cells, values):
-        key = round(c[across], 12)
+        key = snap(c[across])
         if key not in (lo, hi):
             continue
-        s = round(c[along], 12)
+        s = snap(c[along])
         weight = (1 - w if key == lo else 0.0) + (w if key == hi else 0.0)
         rows[s] = rows.get(s, 0.0) + weight * v[component]
     profile = [(0.0, ends[0])] + sorted(rows.items()) + [(1.0, ends[1])]

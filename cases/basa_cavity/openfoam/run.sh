@@ -34,6 +34,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../../.." && pwd)
 out="$repo/bench/openfoam_cavity"
 work=${3:-/tmp/arksph_openfoam_re${re}_n${n}}
+source "$repo/scripts/openfoam.sh"
 mkdir -p "$out"
 rm -rf "$work"
 mkdir -p "$work/0" "$work/constant" "$work/system"
@@ -45,11 +46,7 @@ depth=$(python3 -c "print(repr(1.0 / $n))")
 dt=$(python3 -c "print(repr(1.0 / $n))")
 every=$(( n / 10 ))  # 0.1 / dt
 
-header() {  # FoamFile header: class, object
-  printf 'FoamFile\n{\n    version 2.0;\n    format ascii;\n    class %s;\n    object %s;\n}\n' "$1" "$2"
-}
-
-{ header dictionary blockMeshDict
+{ foam_header dictionary blockMeshDict
   cat <<EOD
 convertToMeters 1;
 vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 $depth) (1 0 $depth) (1 1 $depth) (0 1 $depth));
@@ -64,7 +61,7 @@ boundary
 EOD
 } > "$work/system/blockMeshDict"
 
-{ header dictionary controlDict
+{ foam_header dictionary controlDict
   cat <<EOD
 application icoFoam;
 startFrom startTime;
@@ -111,7 +108,7 @@ functions
 EOD
 } > "$work/system/controlDict"
 
-{ header dictionary fvSchemes
+{ foam_header dictionary fvSchemes
   cat <<'EOD'
 ddtSchemes { default Euler; }
 gradSchemes { default Gauss linear; }
@@ -122,7 +119,7 @@ snGradSchemes { default orthogonal; }
 EOD
 } > "$work/system/fvSchemes"
 
-{ header dictionary fvSolution
+{ foam_header dictionary fvSolution
   cat <<'EOD'
 solvers
 {
@@ -134,11 +131,11 @@ PISO { nCorrectors 2; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
 EOD
 } > "$work/system/fvSolution"
 
-{ header dictionary transportProperties
+{ foam_header dictionary transportProperties
   echo "nu $nu;"
 } > "$work/constant/transportProperties"
 
-{ header volVectorField U
+{ foam_header volVectorField U
   cat <<'EOD'
 dimensions [0 1 -1 0 0 0 0];
 internalField uniform (0 0 0);
@@ -151,7 +148,7 @@ boundaryField
 EOD
 } > "$work/0/U"
 
-{ header volScalarField p
+{ foam_header volScalarField p
   cat <<'EOD'
 dimensions [0 2 -2 0 0 0 0];
 internalField uniform 0;
@@ -164,18 +161,9 @@ boundaryField
 EOD
 } > "$work/0/p"
 
-cd "$work"
-export OMP_NUM_THREADS=1
-if [[ -z "${WM_PROJECT_DIR:-}" ]]; then  # Debian's OpenFOAM environment (etc/controlDict and libraries)
-  set +eu
-  source /usr/share/openfoam/etc/bashrc 2>/dev/null  # (its path clean-up helper is not packaged)
-  set -eu
-fi
-nice -n 10 blockMesh > log.blockMesh 2>&1
-start=$(date +%s)
-nice -n 10 icoFoam > log.icoFoam 2>&1
-seconds=$(( $(date +%s) - start ))
-nice -n 10 postProcess -func writeCellCentres -latestTime > log.writeCellCentres 2>&1
+foam_run "$work" blockMesh icoFoam
+seconds=$FOAM_SECONDS
+foam_run "$work" "postProcess -func writeCellCentres -latestTime"
 echo "icoFoam: Re = $re, ${n} x ${n}, t = $end, dt = $dt: ${seconds} s wall"
 
 python3 "$here/extract.py" "$work" "$end" "$depth" \

@@ -15,7 +15,8 @@ OUT/eps_re0.5.csv. OUT/robustness.png and OUT/eps_re0.5.png are drawn from the C
   run_map.py --plot-only OUT      # redraw the figures
   run_map.py --figures OUT        # Fig. 4 (near-wall start-up profiles per wall option, with and
                                   # without particles on the wall) and Fig. 2 (pressure reduction
-                                  # off / on), runs and PNGs in OUT/fig4, OUT/fig2
+                                  # off / on, at c = 10 U0 and at Basa's 125 kPa), runs and PNGs
+                                  # in OUT/fig4, OUT/fig2
 """
 import argparse
 import concurrent.futures as cf
@@ -178,6 +179,9 @@ def plot(out_dir):
 WALL_OPTIONS = [(wv, wp) for wp in ("false", "true") for wv in ("mirror", "linear", "quadratic")]
 FIG4 = dict(re=0.5, tstar=0.1, letter="B", model="two_pass", corr="bonet_lok", eos="ideal_gas")
 FIG2 = dict(re=0.3, tstar=TSTAR_STEADY, letter="E", model="morris", corr="none", eos="ideal_gas")
+# Fig. 2's pressure levels: the map's sound speed c = 10 U0 (initial pressure rho c^2 / gamma = 0.026 at
+# Re = 0.3), and Basa's initial 125 kPa (section 6.1: rho = 1, so c = sqrt(gamma p / rho) = 418 m/s).
+FIG2_LEVELS = {"c = 10 U0": None, "125 kPa": math.sqrt(1.4 * 125e3)}
 
 
 def run_case(binary, run_dir, re, tstar, model, corr, eos, extra, max_steps=500000):
@@ -213,7 +217,8 @@ def run_case(binary, run_dir, re, tstar, model, corr, eos, extra, max_steps=5000
 
 def figures(binary, out_dir, jobs):
     """Basa Fig. 4 (near-wall profiles at t* = 0.1 per wall option, model B with first-order
-    correction, compressible) and Fig. 2 (model E, compressible, Re = 0.3, pressure reduction off/on)."""
+    correction, compressible) and Fig. 2 (model E, compressible, Re = 0.3, pressure reduction off/on,
+    at the map's pressure level and at Basa's 125 kPa)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -223,8 +228,15 @@ def figures(binary, out_dir, jobs):
     jobs4 = {(wv, wp): (os.path.join(f4, f"{wv}_particles-{wp}"), FIG4["re"], FIG4["tstar"], FIG4["model"], FIG4["corr"],
                         FIG4["eos"], {"boundary.wall_velocity": wv, "boundary.wall_particles": wp})
              for wv, wp in WALL_OPTIONS}
-    jobs2 = {pr: (os.path.join(f2, f"pressure_reduction-{pr}"), FIG2["re"], FIG2["tstar"], FIG2["model"], FIG2["corr"],
-                  FIG2["eos"], {"method.pressure_reduction": pr}) for pr in ("false", "true")}
+    jobs2 = {}
+    for level, c in FIG2_LEVELS.items():
+        for pr in ("false", "true"):
+            extra = {"method.pressure_reduction": pr}
+            if c is not None:
+                extra["method.sound_speed"] = repr(c)
+            name = f"pressure_reduction-{pr}" + ("" if c is None else "_" + level.replace(" ", ""))
+            jobs2[(level, pr)] = (os.path.join(f2, name), FIG2["re"], FIG2["tstar"], FIG2["model"], FIG2["corr"],
+                                  FIG2["eos"], extra)
     with cf.ThreadPoolExecutor(max_workers=jobs) as pool:
         r4 = {k: pool.submit(run_case, binary, *v) for k, v in jobs4.items()}
         r2 = {k: pool.submit(run_case, binary, *v) for k, v in jobs2.items()}
@@ -256,34 +268,38 @@ def figures(binary, out_dir, jobs):
     fig.tight_layout()
     fig.savefig(os.path.join(f4, "fig4_near_wall.png"), dpi=110)
     plt.close(fig)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-    for pr, (code, series, prof) in r2.items():
-        axes[0].plot([t for t, _ in series], [e for _, e in series],
-                     label=f"pressure reduction {pr} (exit {code})")
-        ys = sorted(set(round(p[0], 6) for p in prof))
-        mean = [sum(p[1] for p in prof if round(p[0], 6) == yv) / sum(1 for p in prof if round(p[0], 6) == yv) for yv in ys]
-        axes[1].plot(mean, ys, label=f"pressure reduction {pr}, t* = {series[-1][0] if series else 0:.3g}")
-        if pr == "true":
-            ex = sorted(set((round(p[0], 6), p[2]) for p in prof))
-            axes[1].plot([e for _, e in ex], [yv for yv, _ in ex], "k:", label="series")
-    axes[0].set_yscale("log")
-    axes[0].axhline(EPS_FAIL, color="grey", lw=0.5)
-    axes[0].set_xlabel("t*")
-    axes[0].set_ylabel("eps (Basa eq. 38)")
-    axes[0].legend(fontsize=7)
-    axes[1].set_xlabel("u (row mean) at the last output")
-    axes[1].set_ylabel("y")
-    axes[1].legend(fontsize=7)
+    fig, axes = plt.subplots(len(FIG2_LEVELS), 2, figsize=(11, 4.5 * len(FIG2_LEVELS)), squeeze=False)
+    for row, level in enumerate(FIG2_LEVELS):
+        ax_eps, ax_u = axes[row]
+        for pr in ("false", "true"):
+            code, series, prof = r2[(level, pr)]
+            ax_eps.plot([t for t, _ in series], [e for _, e in series], label=f"pressure reduction {pr} (exit {code})")
+            ys = sorted(set(round(p[0], 6) for p in prof))
+            mean = [sum(p[1] for p in prof if round(p[0], 6) == yv) / sum(1 for p in prof if round(p[0], 6) == yv)
+                    for yv in ys]
+            ax_u.plot(mean, ys, ".-", ms=3, label=f"pressure reduction {pr}, t* = {series[-1][0] if series else 0:.3g}")
+            if pr == "true":
+                ex = sorted(set((round(p[0], 6), p[2]) for p in prof))
+                ax_u.plot([e for _, e in ex], [yv for yv, _ in ex], "k:", label="series")
+        ax_eps.set_yscale("log")
+        ax_eps.axhline(EPS_FAIL, color="grey", lw=0.5)
+        ax_eps.set_xlabel("t*")
+        ax_eps.set_ylabel("eps (Basa eq. 38)")
+        ax_eps.set_title(f"initial pressure: {level}", fontsize=9)
+        ax_eps.legend(fontsize=7)
+        ax_u.set_xlabel("u (mean over particles at the same y) at the last output")
+        ax_u.set_ylabel("y")
+        ax_u.legend(fontsize=7)
     fig.suptitle(f"Re = {FIG2['re']}, model E, ideal gas, no correction: pressure reduction off / on (Basa Fig. 2)")
     fig.tight_layout()
     fig.savefig(os.path.join(f2, "fig2_pressure_reduction.png"), dpi=110)
     plt.close(fig)
     with open(os.path.join(f2, "fig2_eps.csv"), "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["pressure_reduction", "exit", "tstar", "eps"])
-        for pr, (code, series, _) in r2.items():
+        w.writerow(["initial_pressure", "pressure_reduction", "exit", "tstar", "eps"])
+        for (level, pr), (code, series, _) in r2.items():
             for t, e in series:
-                w.writerow([pr, code, t, e])
+                w.writerow([level, pr, code, t, e])
 
 
 def main():

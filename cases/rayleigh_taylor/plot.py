@@ -5,7 +5,8 @@
 
 Writes into OUT_DIR:
   rt_particles.png  particles coloured by phase at t = 1, 3, 5 (rows), one column per run, with the
-                    0.5 contour of the smoothed phase indicator (interface_NNNNNN.csv) on top;
+                    0.5 contour of the smoothed phase indicator (interface_NNNNNN.csv) on top, and
+                    in green the OpenFOAM interface of bench/openfoam_rt (200 x 400) at t = 1, 3, 5;
   rt_tips.png       bubble and spike tip heights (timeseries.csv) against time.
 Reads the VTP frames directly (appended raw binary, zlib, UInt64 headers, as arksph writes them).
 """
@@ -23,6 +24,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+# The OpenFOAM interface (bench/openfoam_rt), drawn in green where it exists for a panel's time.
+REFERENCE = Path(__file__).resolve().parents[2] / "bench" / "openfoam_rt" / "openfoam_rt_n200"
 TIMES = tuple(float(t) for t in __import__('os').environ.get('RT_TIMES', '1 3 5').split())
 DTYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "Float32": "<f4", "UInt8": "u1"}
 
@@ -80,6 +83,12 @@ def main():
                 with open(icsv) as f:
                     for row in csv.DictReader(f):
                         ax.plot([float(row["x0"]), float(row["x1"])], [float(row["y0"]), float(row["y1"])], "k-", lw=0.8)
+            ref = REFERENCE.parent / ("%s_interface_t%g.csv" % (REFERENCE.name, t))
+            if ref.exists():
+                with open(ref) as f:
+                    for row in csv.DictReader(f):
+                        ax.plot([float(row["x0"]), float(row["x1"])], [float(row["y0"]), float(row["y1"])], "-",
+                                color="lime", lw=0.6)
             ax.set_xlim(0, 1)
             ax.set_ylim(0, 2)
             ax.set_aspect("equal")

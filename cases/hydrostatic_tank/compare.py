@@ -8,14 +8,10 @@ particle in the last frame against depth H - y, with rho g (H - y) (the projecti
 is free in a closed box: each run is shifted to the mean of the reference). Prints per run the
 largest speed over the outputs, the speed at the last output and the r.m.s. relative deviation of
 the pressure from rho g (H - y) (both at zero mean, relative to the reference's r.m.s.).
-Reads the VTP frames directly (appended raw binary, zlib, UInt64 headers, as arksph writes them).
+Reads the VTP frames directly (scripts/vtp_frames.py).
 """
 import csv
-import re
-import struct
 import sys
-import xml.etree.ElementTree as ET
-import zlib
 from pathlib import Path
 
 import matplotlib
@@ -24,36 +20,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+from vtp_frames import frames, read_vtp  # noqa: E402
+
 H, G, RHO = 1.0, 1.0, 1.0
-DTYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "Float32": "<f4", "UInt8": "u1"}
-
-
-def read_vtp(path):
-    raw = Path(path).read_bytes()
-    marker = raw.index(b"<AppendedData")
-    start = raw.index(b"_", marker) + 1
-    head = raw[:marker].decode()
-    arrays = {}
-    for tag in re.findall(r"<DataArray[^>]*>", head):
-        da = dict(re.findall(r'(\w+)="([^"]*)"', tag))
-        off = start + int(da.get("offset"))
-        nblocks, _, _ = struct.unpack_from("<QQQ", raw, off)
-        sizes = struct.unpack_from("<%dQ" % nblocks, raw, off + 24)
-        pos = off + 24 + 8 * nblocks
-        data = b""
-        for s in sizes:
-            data += zlib.decompress(raw[pos:pos + s])
-            pos += s
-        a = np.frombuffer(data, dtype=DTYPES[da.get("type")])
-        nc = int(da.get("NumberOfComponents", "1"))
-        arrays[da.get("Name")] = a.reshape(-1, nc) if nc > 1 else a
-    return arrays
-
-
 def last_frame(run):
-    root = ET.parse(Path(run) / "particles.pvd").getroot()
-    frames = [(float(d.get("timestep")), Path(run) / d.get("file")) for d in root.iter("DataSet")]
-    return max(frames)
+    return max(frames(run))
 
 
 def timeseries(run):

@@ -8,14 +8,10 @@ Writes into OUT_DIR:
                     0.5 contour of the smoothed phase indicator (interface_NNNNNN.csv) on top, and
                     in green the OpenFOAM interface of bench/openfoam_rt (200 x 400) at t = 1, 3, 5;
   rt_tips.png       bubble and spike tip heights (timeseries.csv) against time.
-Reads the VTP frames directly (appended raw binary, zlib, UInt64 headers, as arksph writes them).
+Reads the VTP frames directly (scripts/vtp_frames.py).
 """
 import csv
-import re
-import struct
 import sys
-import xml.etree.ElementTree as ET
-import zlib
 from pathlib import Path
 
 import matplotlib
@@ -24,38 +20,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+from vtp_frames import frames, read_vtp  # noqa: E402
+
 # The OpenFOAM interface (bench/openfoam_rt), drawn in green where it exists for a panel's time.
 REFERENCE = Path(__file__).resolve().parents[2] / "bench" / "openfoam_rt" / "openfoam_rt_n200"
 TIMES = tuple(float(t) for t in __import__('os').environ.get('RT_TIMES', '1 3 5').split())
-DTYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "Float32": "<f4", "UInt8": "u1"}
-
-
-def read_vtp(path):
-    raw = Path(path).read_bytes()
-    marker = raw.index(b"<AppendedData")
-    start = raw.index(b"_", marker) + 1
-    head = raw[:marker].decode()
-    arrays = {}
-    for tag in re.findall(r"<DataArray[^>]*>", head):
-        da = dict(re.findall(r'(\w+)="([^"]*)"', tag))
-        off = start + int(da.get("offset"))
-        nblocks, _, _ = struct.unpack_from("<QQQ", raw, off)
-        sizes = struct.unpack_from("<%dQ" % nblocks, raw, off + 24)
-        pos = off + 24 + 8 * nblocks
-        data = b""
-        for s in sizes:
-            data += zlib.decompress(raw[pos:pos + s])
-            pos += s
-        a = np.frombuffer(data, dtype=DTYPES[da.get("type")])
-        nc = int(da.get("NumberOfComponents", "1"))
-        arrays[da.get("Name")] = a.reshape(-1, nc) if nc > 1 else a
-    return arrays
-
-
-def frames(run):
-    """(time, vtp file) from particles.pvd."""
-    root = ET.parse(Path(run) / "particles.pvd").getroot()
-    return [(float(d.get("timestep")), Path(run) / d.get("file")) for d in root.iter("DataSet")]
 
 
 def nearest(run, t):

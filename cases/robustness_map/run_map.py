@@ -15,8 +15,8 @@ OUT/eps_re0.5.csv. OUT/robustness.png and OUT/eps_re0.5.png are drawn from the C
   run_map.py --plot-only OUT      # redraw the figures
   run_map.py --figures OUT        # Fig. 4 (near-wall start-up profiles per wall option, with and
                                   # without particles on the wall) and Fig. 2 (pressure reduction
-                                  # off / on, at c = 10 U0 and at Basa's 125 kPa), runs and PNGs
-                                  # in OUT/fig4, OUT/fig2
+                                  # off / on, at c = 10 U0 and at Basa's 125 kPa) and Fig. 7
+                                  # (transverse drift, drift.py), runs and PNGs in OUT/fig4, fig2, fig7
 """
 import argparse
 import concurrent.futures as cf
@@ -182,10 +182,17 @@ FIG2 = dict(re=0.3, tstar=TSTAR_STEADY, letter="E", model="morris", corr="none",
 # Fig. 2's pressure levels: the map's sound speed c = 10 U0 (initial pressure rho c^2 / gamma = 0.026 at
 # Re = 0.3), and Basa's initial 125 kPa (section 6.1: rho = 1, so c = sqrt(gamma p / rho) = 418 m/s).
 FIG2_LEVELS = {"c = 10 U0": None, "125 kPa": math.sqrt(1.4 * 125e3)}
+# Fig. 7: kinetic energy and the transverse drift of neighbours out of their row (drift.py), model C
+# at Re = 0.5, on the Tait equation at c = 10 U0 and on the ideal gas at Basa's 125 kPa, frames every
+# FIG7_EVERY in t*.
+FIG7 = dict(re=0.5, tstar=TSTAR_STEADY, letter="C", model="violeau", corr="none")
+FIG7_RUNS = {"Tait, c = 10 U0": ("tait", None), "ideal gas, 125 kPa": ("ideal_gas", math.sqrt(1.4 * 125e3))}
+FIG7_EVERY = 0.25
 
 
-def run_case(binary, run_dir, re, tstar, model, corr, eos, extra, max_steps=500000):
-    """One start-up run of scene.toml; returns (exit code, [(t*, eps)], profile rows (y, u, u_exact))."""
+def run_case(binary, run_dir, re, tstar, model, corr, eos, extra, max_steps=500000, keep_frames=False):
+    """One start-up run of scene.toml; returns (exit code, [(t*, eps)], profile rows (y, u, u_exact)).
+    The frames and the checkpoint are deleted unless keep_frames."""
     u0 = re * NU / D
     shutil.rmtree(run_dir, ignore_errors=True)
     sets = {"fluid.body_force": f"[{2 * NU * u0 / D ** 2!r},0]", "method.sound_speed": repr(10 * u0),
@@ -209,7 +216,7 @@ def run_case(binary, run_dir, re, tstar, model, corr, eos, extra, max_steps=5000
                 pass
     if os.path.exists(pr_path):
         profile = [(float(r["y"]), float(r["u_sph"]), float(r["u_exact"])) for r in csv.DictReader(open(pr_path))]
-    for name in os.listdir(run_dir) if os.path.isdir(run_dir) else []:
+    for name in os.listdir(run_dir) if os.path.isdir(run_dir) and not keep_frames else []:
         if name.endswith(".vtp") or name.endswith(".h5") or name.endswith(".pvd"):
             os.remove(os.path.join(run_dir, name))
     return proc.returncode, series, profile
@@ -237,11 +244,22 @@ def figures(binary, out_dir, jobs):
             name = f"pressure_reduction-{pr}" + ("" if c is None else "_" + level.replace(" ", ""))
             jobs2[(level, pr)] = (os.path.join(f2, name), FIG2["re"], FIG2["tstar"], FIG2["model"], FIG2["corr"],
                                   FIG2["eos"], extra)
+    f7 = os.path.join(out_dir, "fig7")
+    os.makedirs(f7, exist_ok=True)
+    jobs7 = {}
+    for label, (eos, c) in FIG7_RUNS.items():
+        extra = {"output.every": repr(tstar_to_t(FIG7_EVERY))}
+        if c is not None:
+            extra["method.sound_speed"] = repr(c)
+        jobs7[label] = (os.path.join(f7, eos), FIG7["re"], FIG7["tstar"], FIG7["model"], FIG7["corr"], eos, extra)
     with cf.ThreadPoolExecutor(max_workers=jobs) as pool:
         r4 = {k: pool.submit(run_case, binary, *v) for k, v in jobs4.items()}
         r2 = {k: pool.submit(run_case, binary, *v) for k, v in jobs2.items()}
+        r7 = {k: pool.submit(run_case, binary, *v, keep_frames=True) for k, v in jobs7.items()}
         r4 = {k: f.result() for k, f in r4.items()}
         r2 = {k: f.result() for k, f in r2.items()}
+        r7 = {k: f.result() for k, f in r7.items()}
+    fig7(f7, jobs7, r7)
     with open(os.path.join(f4, "fig4_eps.csv"), "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["wall_velocity", "wall_particles", "exit", "tstar", "eps"])
@@ -302,6 +320,42 @@ def figures(binary, out_dir, jobs):
                 w.writerow([level, pr, code, t, e])
 
 
+def fig7(out_dir, jobs7, results):
+    """Basa Fig. 7 from the kept frames: OUT/fig7/fig7_drift.png and fig7_drift.csv."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    sys.path.insert(0, HERE)
+    from drift import COLUMNS, drift_series
+    u0 = FIG7["re"] * NU / D
+    fig, (ax_ke, ax_drift) = plt.subplots(1, 2, figsize=(11, 4.5))
+    with open(os.path.join(out_dir, "fig7_drift.csv"), "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["run", "exit", "tstar"] + COLUMNS)
+        for (label, job), colour in zip(jobs7.items(), ("tab:blue", "tab:red")):
+            code = results[label][0]
+            rows = drift_series(job[0], u0)
+            tstar = [r[0] * math.pi ** 2 * NU / (4 * D * D) for r in rows]
+            for ts, r in zip(tstar, rows):
+                w.writerow([label, code, "%.6g" % ts] + ["%.6g" % v for v in r])
+            ax_ke.plot(tstar, [r[1] for r in rows], color=colour, label=f"{label} (exit {code})")
+            floor = 1e-17  # the drifts start at exactly 0 on the lattice: drawn at this floor
+            ax_drift.plot(tstar, [max(r[2], floor) for r in rows], "-", color=colour, label=f"{label}: one pair")
+            ax_drift.plot(tstar, [max(r[3], floor) for r in rows], "--", color=colour, label=f"{label}: largest pair")
+            ax_drift.plot(tstar, [max(r[5], floor) for r in rows], ":", color=colour, label=f"{label}: row as a whole")
+    ax_ke.set_xlabel("t*")
+    ax_ke.set_ylabel("kinetic energy / steady value")
+    ax_ke.legend(fontsize=7)
+    ax_drift.set_yscale("log")
+    ax_drift.set_xlabel("t*")
+    ax_drift.set_ylabel("transverse drift / dx")
+    ax_drift.legend(fontsize=6)
+    fig.suptitle(f"Poiseuille, Re = {FIG7['re']}, model C, no correction (Basa Fig. 7)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "fig7_drift.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--reduced", action="store_true", help="5 Re values (0.1 to 10), 6,000 steps at most")
@@ -311,7 +365,7 @@ def main():
     ap.add_argument("--max-steps", type=int, default=None)
     ap.add_argument("--re", type=float, nargs="*", default=None, help="Reynolds numbers (override)")
     ap.add_argument("--plot-only", metavar="OUT", default=None)
-    ap.add_argument("--figures", metavar="OUT", default=None, help="Fig. 4 and Fig. 2 runs and plots into OUT")
+    ap.add_argument("--figures", metavar="OUT", default=None, help="Fig. 4, Fig. 2 and Fig. 7 runs and plots into OUT")
     a = ap.parse_args()
     if a.figures:
         figures(a.binary, a.figures, a.jobs)

@@ -25,6 +25,8 @@ STEP = 0.002  # sample spacing along a curve, below a tenth of the finest partic
 
 
 def read_segments(path):
+    if not Path(path).exists():
+        raise SystemExit(f"compare.py: {path} does not exist")
     with open(path) as f:
         rows = [[float(r[k]) for k in ("x0", "y0", "x1", "y1")] for r in csv.DictReader(f)]
     if not rows:

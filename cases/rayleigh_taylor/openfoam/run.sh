@@ -14,8 +14,8 @@
 # cell (initial_alpha.py).
 # The momentum predictor is needed: without it the pressure correctors alone carry the viscous
 # operator, whose splitting error grows with nu dt / dx^2. At 200 x 400 and dt = 0.01 (about 1) the
-# largest speed at t = 0.5 came out 44 % low (0.051 against 0.091 at 100 x 200 and 0.091 with the
-# predictor at 200 x 400), and the interface fell behind the coarser meshes'.
+# largest speed at t = 0.5 came out 44 % low (0.051 against 0.091 with the predictor), and the
+# interface fell behind the coarser meshes' (bench/openfoam_rt/README.md).
 #
 # Writes into bench/openfoam_rt/:
 #   openfoam_rt_n<N>_tips.csv              t, bubble_y, spike_y (every 0.5; highest and lowest

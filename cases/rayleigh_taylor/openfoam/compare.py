@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 TIMES = (1, 3, 5)
-STEP = 0.002  # sample spacing along a curve, below a tenth of the finest particle spacing compared
+STEP = 0.002  # sample spacing along a curve: a quarter of the finest particle spacing compared (1/120)
 
 
 def read_segments(path):

@@ -12,28 +12,34 @@ ExactVelocity::ExactVelocity(const std::vector<std::string>& components) {
   }
 }
 
-ExactVelocityErrors ExactVelocity::errors(const FluidFields& f) const {
-  double err = 0, norm = 0, peak = 0, peak_exact = 0, fit = 0, fit_norm = 0;
+ExactVelocity::Sums ExactVelocity::sums(const FluidFields& f, std::size_t n) const {
+  Sums s;
   const bool two_d = f.dim == 2 && components_.size() > 1;
-  for (std::size_t a = 0; a < f.n_real; ++a) {
+  for (std::size_t a = 0; a < n; ++a) {
     const double y = two_d ? f.y[a] : 0.0;
     const double ue = components_[0].eval(f.x[a], y, f.t);
     const double ve = two_d ? components_[1].eval(f.x[a], y, f.t) : 0.0;
     const double v = two_d ? f.v[a] : 0.0;
-    err += std::hypot(f.u[a] - ue, v - ve);
+    s.err += std::hypot(f.u[a] - ue, v - ve);
     const double exact = std::hypot(ue, ve);
-    norm += exact;
-    peak = std::max(peak, std::hypot(f.u[a], v));
-    peak_exact = std::max(peak_exact, exact);
+    s.norm += exact;
+    s.peak = std::max(s.peak, std::hypot(f.u[a], v));
+    s.peak_exact = std::max(s.peak_exact, exact);
     const double vol = f.m[a] / f.rho[a];
-    fit += vol * (f.u[a] * ue + v * ve);
-    fit_norm += vol * exact * exact;
+    s.fit += vol * (f.u[a] * ue + v * ve);
+    s.fit_norm += vol * exact * exact;
   }
+  return s;
+}
+
+ExactVelocityErrors ExactVelocity::errors_from(const Sums& s) {
   ExactVelocityErrors e;
-  e.l1_relative = norm > 0 ? err / norm : NAN;
-  e.peak_speed_error = peak_exact > 0 ? peak / peak_exact - 1.0 : NAN;
-  e.amplitude_error = fit_norm > 0 ? fit / fit_norm - 1.0 : NAN;
+  e.l1_relative = s.norm > 0 ? s.err / s.norm : NAN;
+  e.peak_speed_error = s.peak_exact > 0 ? s.peak / s.peak_exact - 1.0 : NAN;
+  e.amplitude_error = s.fit_norm > 0 ? s.fit / s.fit_norm - 1.0 : NAN;
   return e;
 }
+
+ExactVelocityErrors ExactVelocity::errors(const FluidFields& f) const { return errors_from(sums(f, f.n_real)); }
 
 }  // namespace arksph

@@ -29,6 +29,15 @@ class ExactVelocity {
   bool enabled() const { return enabled_; }
   // Over the real particles of fresh fields.
   ExactVelocityErrors errors(const FluidFields& f) const;
+  // The same in two parts, for sums gathered elsewhere (a decomposed run): the sums over the real
+  // particles [0, n) of f, which add up (err .. fit_norm) or take the largest (peak, peak_exact)
+  // over disjoint sets of particles, and the errors from their totals.
+  struct Sums {
+    double err = 0, norm = 0, fit = 0, fit_norm = 0;  // sum |u - u_e|, |u_e|, V u . u_e, V |u_e|^2
+    double peak = 0, peak_exact = 0;                  // max |u|, |u_e|
+  };
+  Sums sums(const FluidFields& f, std::size_t n) const;
+  static ExactVelocityErrors errors_from(const Sums& s);
 
  private:
   std::vector<Expression> components_;

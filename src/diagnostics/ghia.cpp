@@ -4,6 +4,7 @@
 // (the neighbouring rows suggest -0.03); it is used as printed.
 #include "diagnostics/ghia.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -41,10 +42,10 @@ const GhiaRow kGhiaV[] = {
 
 Kernel ghia_interpolation_kernel(double dx) { return make_kernel("wendland_quintic", 1.3 * dx, 2); }
 
-void shepard_velocity(const FluidFields& f, const Kernel& kernel, double px, double py, double& u, double& v) {
+std::array<double, 3> shepard_sums(const FluidFields& f, const Kernel& kernel, double px, double py, std::size_t n) {
   double num_u = 0, num_v = 0, den = 0;
   const double r_max = kernel.radius();
-  for (std::size_t b = 0; b < f.n_real; ++b) {
+  for (std::size_t b = 0; b < n; ++b) {
     const double dx = px - f.x[b], dy = f.dim == 2 ? py - f.y[b] : 0.0;
     const double r = std::sqrt(dx * dx + dy * dy);
     if (r >= r_max) continue;
@@ -53,8 +54,52 @@ void shepard_velocity(const FluidFields& f, const Kernel& kernel, double px, dou
     if (f.dim == 2) num_v += vw * f.v[b];
     den += vw;
   }
-  u = den > 0 ? num_u / den : 0.0;
-  v = den > 0 ? num_v / den : 0.0;
+  return {num_u, num_v, den};
+}
+
+double shepard_ratio(double num, double den) { return den > 0 ? num / den : 0.0; }
+
+void shepard_velocity(const FluidFields& f, const Kernel& kernel, double px, double py, double& u, double& v) {
+  const std::array<double, 3> s = shepard_sums(f, kernel, px, py, f.n_real);
+  u = shepard_ratio(s[0], s[2]);
+  v = shepard_ratio(s[1], s[2]);
+}
+
+std::vector<std::array<double, 2>> ghia_points(double x0, double y0, double length) {
+  std::vector<std::array<double, 2>> points;
+  for (const auto& row : kGhiaU) points.push_back({x0 + 0.5 * length, y0 + row.coord * length});
+  for (const auto& row : kGhiaV) points.push_back({x0 + row.coord * length, y0 + 0.5 * length});
+  return points;
+}
+
+std::size_t ghia_u_point_count() { return std::size(kGhiaU); }
+
+GhiaErrors ghia_errors_at(int re, double lid_speed, const std::vector<double>& u, const std::vector<double>& v) {
+  if (re != 100 && re != 1000 && re != 10000)
+    throw std::invalid_argument("Ghia tables exist for Re = 100, 1000 and 10000");
+  GhiaErrors e;
+  double su = 0, sv = 0;
+  for (std::size_t i = 0; i < std::size(kGhiaU); ++i) {
+    const double ref = kGhiaU[i].at(re);
+    const double err = std::abs(u[i] / lid_speed - ref);
+    e.u_linf = std::max(e.u_linf, err);
+    su += err * err;
+    e.u_coord.push_back(kGhiaU[i].coord);
+    e.u_ref.push_back(ref);
+    e.u_sph.push_back(u[i] / lid_speed);
+  }
+  for (std::size_t i = 0; i < std::size(kGhiaV); ++i) {
+    const double ref = kGhiaV[i].at(re);
+    const double err = std::abs(v[i] / lid_speed - ref);
+    e.v_linf = std::max(e.v_linf, err);
+    sv += err * err;
+    e.v_coord.push_back(kGhiaV[i].coord);
+    e.v_ref.push_back(ref);
+    e.v_sph.push_back(v[i] / lid_speed);
+  }
+  e.u_rms = std::sqrt(su / static_cast<double>(std::size(kGhiaU)));
+  e.v_rms = std::sqrt(sv / static_cast<double>(std::size(kGhiaV)));
+  return e;
 }
 
 GhiaErrors ghia_errors(const FluidFields& f, int re, double x0, double y0, double length, double lid_speed,
@@ -62,33 +107,15 @@ GhiaErrors ghia_errors(const FluidFields& f, int re, double x0, double y0, doubl
   const Kernel kernel = ghia_interpolation_kernel(dx);
   if (re != 100 && re != 1000 && re != 10000)
     throw std::invalid_argument("Ghia tables exist for Re = 100, 1000 and 10000");
-  GhiaErrors e;
-  double su = 0, sv = 0;
-  for (const auto& row : kGhiaU) {
-    double u, v;
-    shepard_velocity(f, kernel, x0 + 0.5 * length, y0 + row.coord * length, u, v);
-    const double ref = row.at(re);
-    const double err = std::abs(u / lid_speed - ref);
-    e.u_linf = std::max(e.u_linf, err);
-    su += err * err;
-    e.u_coord.push_back(row.coord);
-    e.u_ref.push_back(ref);
-    e.u_sph.push_back(u / lid_speed);
+  const auto points = ghia_points(x0, y0, length);
+  const std::size_t nu = ghia_u_point_count();
+  std::vector<double> u, v;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    double pu, pv;
+    shepard_velocity(f, kernel, points[i][0], points[i][1], pu, pv);
+    (i < nu ? u : v).push_back(i < nu ? pu : pv);
   }
-  for (const auto& row : kGhiaV) {
-    double u, v;
-    shepard_velocity(f, kernel, x0 + row.coord * length, y0 + 0.5 * length, u, v);
-    const double ref = row.at(re);
-    const double err = std::abs(v / lid_speed - ref);
-    e.v_linf = std::max(e.v_linf, err);
-    sv += err * err;
-    e.v_coord.push_back(row.coord);
-    e.v_ref.push_back(ref);
-    e.v_sph.push_back(v / lid_speed);
-  }
-  e.u_rms = std::sqrt(su / static_cast<double>(std::size(kGhiaU)));
-  e.v_rms = std::sqrt(sv / static_cast<double>(std::size(kGhiaV)));
-  return e;
+  return ghia_errors_at(re, lid_speed, u, v);
 }
 
 }  // namespace arksph

@@ -13,5 +13,9 @@ struct Histogram {
 };
 
 Histogram nearest_neighbor_histogram(const FluidFields& f, double dx, double bin_width = 0.025, double max_ratio = 1.5);
+// The same over the real particles [0, n) of f only (their neighbours: every real point of f).
+// Counts over disjoint sets of particles add up.
+Histogram nearest_neighbor_histogram_of(const FluidFields& f, std::size_t n, double dx, double bin_width = 0.025,
+                                        double max_ratio = 1.5);
 
 }  // namespace arksph

@@ -16,26 +16,49 @@ std::array<double, 2> crossing(double xa, double ya, double ca, double xb, doubl
 }
 }  // namespace
 
-PhaseInterface phase_interface(const FluidFields& f, const std::vector<std::int32_t>& phase, double xmin,
-                               double ymin, double xmax, double ymax, double spacing) {
-  PhaseInterface out;
-  const long nx = std::lround((xmax - xmin) / spacing) + 1, ny = std::lround((ymax - ymin) / spacing) + 1;
+IndicatorGrid::IndicatorGrid(double xmin_, double ymin_, double xmax, double ymax, double spacing_)
+    : nx(std::lround((xmax - xmin_) / spacing_) + 1),
+      ny(std::lround((ymax - ymin_) / spacing_) + 1),
+      xmin(xmin_),
+      ymin(ymin_),
+      spacing(spacing_),
+      num(static_cast<std::size_t>(nx * ny), 0.0),
+      den(static_cast<std::size_t>(nx * ny), 0.0) {}
+
+void add_phase_indicator(const FluidFields& f, const std::int32_t* phase, IndicatorGrid& g,
+                         const std::function<bool(double, double)>& owns) {
   const Kernel& K = *f.kernel;
   CellList cells;
   cells.build(f.x.data(), f.y.data(), f.n_all, K.radius());
-  std::vector<double> chi(static_cast<std::size_t>(nx * ny), 0.0);
 #pragma omp parallel for schedule(static)
-  for (long j = 0; j < ny; ++j)
-    for (long i = 0; i < nx; ++i) {
-      const double px = xmin + i * spacing, py = ymin + j * spacing;
+  for (long j = 0; j < g.ny; ++j)
+    for (long i = 0; i < g.nx; ++i) {
+      const double px = g.xmin + i * g.spacing, py = g.ymin + j * g.spacing;
+      if (!owns(px, py)) continue;
       double num = 0, den = 0;
       cells.for_each_near(px, py, [&](std::uint32_t b, double dx, double dy) {
         const double w = K.W(std::hypot(dx, dy)) * f.m[b] / f.rho[b];
         den += w;
         if (phase[f.src[b]] >= 1) num += w;
       });
-      chi[static_cast<std::size_t>(j * nx + i)] = den > 0 ? num / den : NAN;  // a void: no contour
+      g.num[static_cast<std::size_t>(j * g.nx + i)] += num;
+      g.den[static_cast<std::size_t>(j * g.nx + i)] += den;
     }
+}
+
+PhaseInterface phase_interface(const FluidFields& f, const std::vector<std::int32_t>& phase, double xmin,
+                               double ymin, double xmax, double ymax, double spacing) {
+  IndicatorGrid grid(xmin, ymin, xmax, ymax, spacing);
+  add_phase_indicator(f, phase.data(), grid, [](double, double) { return true; });
+  return contour_phase_indicator(grid);
+}
+
+PhaseInterface contour_phase_indicator(const IndicatorGrid& g) {
+  PhaseInterface out;
+  const long nx = g.nx, ny = g.ny;
+  const double xmin = g.xmin, ymin = g.ymin, spacing = g.spacing;
+  std::vector<double> chi(g.num.size());
+  for (std::size_t k = 0; k < chi.size(); ++k) chi[k] = g.den[k] > 0 ? g.num[k] / g.den[k] : NAN;  // a void: no contour
   // Marching squares; the saddle cases take the two segments that keep the centre value's side.
   auto at = [&](long i, long j) { return chi[static_cast<std::size_t>(j * nx + i)]; };
   double top = -HUGE_VAL, bottom = HUGE_VAL;
@@ -71,24 +94,6 @@ PhaseInterface phase_interface(const FluidFields& f, const std::vector<std::int3
   out.bubble_y = out.segments.empty() ? NAN : top;
   out.spike_y = out.segments.empty() ? NAN : bottom;
   return out;
-}
-
-PhaseDensity upper_phase_density(const FluidFields& f, const std::vector<std::int32_t>& phase,
-                                 const std::vector<double>& number_density) {
-  PhaseDensity d;
-  double sum = 0, sum2 = 0;
-  long count = 0;
-  for (std::size_t a = 0; a < f.n_real; ++a) {
-    if (phase[a] < 1) continue;
-    const double rho = f.m[a] * number_density[a];  // Szewc eq. 55 summand
-    sum += rho;
-    sum2 += rho * rho;
-    ++count;
-  }
-  if (count == 0) return d;
-  d.mean = sum / static_cast<double>(count);
-  d.rms = std::sqrt(std::max(0.0, sum2 / static_cast<double>(count) - d.mean * d.mean));  // eq. 56
-  return d;
 }
 
 }  // namespace arksph

@@ -9,6 +9,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "rhs/fluid_fields.hpp"
@@ -24,10 +25,22 @@ struct PhaseInterface {
 PhaseInterface phase_interface(const FluidFields& f, const std::vector<std::int32_t>& phase, double xmin,
                                double ymin, double xmax, double ymax, double spacing);
 
-struct PhaseDensity {
-  double mean = 0, rms = 0;  // Szewc eqs. 55-56 over the particles of phase >= 1
+// The same in two parts, for sums gathered elsewhere (a decomposed run): the indicator's numerator
+// and denominator at the grid nodes, which add up over disjoint sets of nodes, and the contour.
+struct IndicatorGrid {
+  IndicatorGrid(double xmin, double ymin, double xmax, double ymax, double spacing);
+  long nx = 0, ny = 0;
+  double xmin = 0, ymin = 0, spacing = 0;
+  std::vector<double> num, den;  // node (i, j) at j nx + i
 };
-PhaseDensity upper_phase_density(const FluidFields& f, const std::vector<std::int32_t>& phase,
-                                 const std::vector<double>& number_density);
+// Adds the sums over every point of f (real and ghost; phase per real point, ghosts take their
+// source's) at the nodes for which owns(x, y) holds.
+void add_phase_indicator(const FluidFields& f, const std::int32_t* phase, IndicatorGrid& grid,
+                         const std::function<bool(double, double)>& owns);
+PhaseInterface contour_phase_indicator(const IndicatorGrid& grid);
+
+struct PhaseDensity {
+  double mean = 0, rms = 0;  // Szewc eqs. 55-56 over the particles of phase >= 1 (frame_reduction.hpp)
+};
 
 }  // namespace arksph

@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "core/scheme.hpp"
 #include "diagnostics/flow_metrics.hpp"
+#include "diagnostics/frame_reduction.hpp"
 #include "distributed/gather_state.hpp"
 #include "distributed/halo_rhs.hpp"
 #ifdef ARKSPH_WITH_HYPRE
@@ -20,7 +21,7 @@
 #endif
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
-#include "distributed/rank_piece.hpp"
+#include "distributed/rank_frame.hpp"
 #include "distributed/rank_verdict.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "parallel/migration.hpp"
@@ -162,24 +163,38 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   }
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
-  // The whole model's fields at t = 0 on rank 0 only (the other ranks never evaluate the whole model,
-  // so that they hold no neighbour list of it): the number density of its output, and the largest
-  // acceleration, which every rank's state checker takes for its speed bound.
-  std::vector<double> d0;
+  // The particles dealt to the ranks from a whole state y (at t = 0, a restart and every checkpoint),
+  // sorted by cell as one process sorts its own at t = 0 and at its re-sorts (method.reorder_every >
+  // 0; 0 keeps the dealt order, as one process keeps its own). No rank evaluates the whole model.
+  const parallel::CellGrid grid(domain_of(scene), rhs.kernel().radius());
+  std::optional<parallel::Decomposition> decomposition;
+  together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, y0.data(), ranks, scene)); });
+  RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
+  const auto sort_mine = [&] {
+    if (scene.reorder_every > 0) mine.sort_by_cell(scene.min.data(), rhs.kernel().radius());
+  };
+  sort_mine();
+  HaloRhs f(scene, model, comm, mine);
+  f.set_decomposition(*decomposition);
+  // The initial state's fields on the ranks: the number density d0 of every particle by id (C&R's
+  // CV, and the frames' reference), and the largest acceleration, which every rank's state checker
+  // takes for its speed bound.
+  long diagnostic_evals = 1;
+  std::vector<double> d0_by_id;
   double accel0 = 0;
-  together(comm, [&] {
-    if (!root) return;
-    rhs.eval(0.0, y0.data(), nullptr);
-    d0 = number_density(rhs.fields());
-    accel0 = rhs.max_acceleration();
-  });
-  accel0 = comm.max(accel0);
+  {
+    std::vector<double> y = mine.state(), ydot(y.size());
+    f.eval(0.0, y.data(), ydot.data());
+    accel0 = comm.max(f.local_max_acceleration());
+    f.eval(0.0, y.data(), nullptr);  // the fields with their pair list, as a frame's
+    std::vector<double> d0 = number_density(f.evaluator().fields());
+    d0.resize(mine.size());
+    d0_by_id = spread_by_id(comm, mine.ids(), d0, model.particles.n);
+  }
+  std::vector<double>().swap(y0);
   // Restart: the model's particles in the checkpoint's order (every rank read the checkpoint), checked
   // against the scene; rank 0 reads the earlier output before RunOutput truncates it.
-  if (options.restart) {
-    const auto order = adopt_particle_order(model, options.restart->id);
-    if (root) permute(d0, order);
-  }
+  if (options.restart) adopt_particle_order(model, options.restart->id);
   std::optional<Checkpointer> checkpoints;
   together(comm, [&] { checkpoints.emplace(scene, model, options.restart, options.restart_path); });
   checkpoints->set_run_id(run_id);
@@ -191,38 +206,22 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
                                     scene.every);
   });
   const StateChecker checker(scene, model, accel0);
-  if (restarting) {
-    y0 = checkpoints->restart().state;
-    rhs.invalidate_neighbors();  // rank 0's output refreshes the fields of the whole model in the new order
-    together(comm, [&] { checker.check(checkpoints->start_time(), y0.data()); });  // NaN, blow-up, escape in the file
-  }
-  // The whole model's neighbour list and fields are not needed again until rank 0's next frame
-  // (the ranks step their own evaluators): freed, so that a rank holds them only while it needs them.
-  // The other ranks never evaluate it: its evaluator's particle data and the model's initial
-  // positions and velocities go too (a new deal reads only masses, densities, phases and ids).
-  if (root) {
-    rhs.release_storage();
-  } else {
-    rhs.release_particles();
+  // The whole model's evaluator is never evaluated: its particle data and the model's initial
+  // positions and velocities go (a new deal reads only masses, densities, phases and ids).
+  rhs.release_particles();
+  {
     ParticleSet& all = model.particles;
     for (auto* v : {&all.init_pos[0], &all.init_pos[1], &all.init_vel[0], &all.init_vel[1]})
       std::vector<double>().swap(*v);
   }
-
-  // The particles dealt to the ranks from the whole state (at t = 0, a restart and every checkpoint).
-  const parallel::CellGrid grid(domain_of(scene), rhs.kernel().radius());
-  std::optional<parallel::Decomposition> decomposition;
-  together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, y0.data(), ranks, scene)); });
-  RankParticles mine(model.particles, layout, y0.data(), *decomposition, comm.rank());
-  std::vector<double>().swap(y0);  // the ranks hold the state from here
-  // The rank's particles by cell, as one process sorts its own at t = 0 and at its re-sorts
-  // (method.reorder_every > 0; 0 keeps the dealt order, as one process keeps its own).
-  const auto sort_mine = [&] {
-    if (scene.reorder_every > 0) mine.sort_by_cell(scene.min.data(), rhs.kernel().radius());
-  };
-  sort_mine();
-  HaloRhs f(scene, model, comm, mine);
-  f.set_decomposition(*decomposition);
+  if (restarting) {  // the checkpoint's state, dealt anew
+    const std::vector<double>& yr = checkpoints->restart().state;
+    together(comm, [&] { checker.check(checkpoints->start_time(), yr.data()); });  // NaN, blow-up, escape in the file
+    together(comm, [&] { decomposition.emplace(bisect_state(grid, layout, yr.data(), ranks, scene)); });
+    mine = RankParticles(model.particles, layout, yr.data(), *decomposition, comm.rank());
+    sort_mine();
+    f.set_decomposition(*decomposition);
+  }
   const StateGather gather(model.particles.id, layout);
 #ifdef ARKSPH_WITH_HYPRE
   // ISPH: the projection after each step over the ranks, its pressure pinned at the first particle
@@ -294,41 +293,68 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     checkpoints->set_steady_monitor(&out->steady_monitor());
   });
   if (root && integrator->workaround_installed()) out->add_term("erkstep:fsal_bug_workaround");
-  const long diag_before = rhs.evaluations();
-  // The whole state on rank 0 (on every rank with `everywhere`), from the integrator's state.
+  // The whole state on rank 0 (on every rank with `everywhere`), from the integrator's state. A rank
+  // that receives it frees its evaluator's storage first (rebuilt at the next evaluation; after a
+  // scheduled checkpoint the particles are dealt anew, which rebuilds it anyway).
   const auto whole_state = [&](bool everywhere) {
     mine.load(integrator->state());
+    if (everywhere || root) f.release_storage();
     return everywhere ? gather.allgather(comm, mine) : gather.gather(comm, mine);
   };
-  // A frame: rank 0 writes the frame of the whole state and the diagnostics; with output.pieces
-  // every rank writes its piece first (its fields refreshed at the state, as rank 0's are) and rank
-  // 0 the index naming them.
+  // A frame: every rank refreshes its fields at the state and adds its particles and sample points
+  // to the frame's diagnostics, which the ranks reduce (diagnostics/frame_reduction.hpp); rank 0
+  // writes the CSV row. The particles' rows go to each rank's piece (output.pieces, rank 0 writing
+  // the index naming them), or are joined on rank 0 into one file. At the first frame (the next
+  // evaluation is at the same state) and the last (none follows), rank 0 frees its evaluator's
+  // storage before the join, so that it holds either, not both: a list built anew at the same
+  // positions sums the same pairs in the same order, whereas a rebuild at another time would not.
   const bool pieces = scene.pieces && options.write_frames;
   if (root && pieces) out->set_pieces(ranks);
+  // The frame's diagnostics at the state the ranks' fields were last refreshed at.
+  const auto reduce_diagnostics = [&](double at, FrameReduction& reduction) {
+    std::vector<double> d0(mine.size());
+    for (std::size_t a = 0; a < mine.size(); ++a) d0[a] = d0_by_id[static_cast<std::size_t>(mine.ids()[a])];
+    const parallel::Decomposition& boxes = *decomposition;
+    const int me = comm.rank();
+    reduction.add({&f.evaluator().fields(), mine.size(), d0.data(), f.evaluator().particles().phase.data()},
+                  [&](double x, double y) {
+                    double q[3] = {x, y, 0.0};
+                    grid.domain().wrap(q);
+                    return boxes.owner(q) == me;
+                  });
+    comm.sum_in_place(reduction.sums());
+    comm.max_in_place(reduction.maxima());
+    std::vector<double> fluctuations = reduction.fluctuations();
+    comm.sum_in_place(fluctuations);
+    FrameDiagnostics diag = reduction.finish(at, fluctuations);
+    if (scene.poiseuille) diag.poiseuille_profile = comm.gatherv(reduction.profile());
+    return diag;
+  };
   const auto write_frame = [&](double at, const ErkStats& st) {
-    if (pieces) {
-      f.eval(at, integrator->state(), nullptr);
-      std::vector<double> pressure;  // isph: the last projection's, as a whole frame carries it
+    f.eval(at, integrator->state(), nullptr);
+    ++diagnostic_evals;
+    FrameReduction reduction(scene);
+    const FrameDiagnostics diag = reduce_diagnostics(at, reduction);
+    std::optional<JoinedFrame> whole;
+    if (options.write_frames) {
+      std::vector<double> pressure;  // isph: the last projection's, as one process's frame carries it
 #ifdef ARKSPH_WITH_HYPRE
       if (projection && projection->stats().solves > 0) pressure = projection->pressure_at(mine.ids());
 #endif
-      const int number = static_cast<int>(comm.max(static_cast<std::int64_t>(root ? out->frames() : 0)));
-      together(comm, [&] {
-        write_rank_piece(scene.directory + "/" + piece_file_name(number, comm.rank()), at, f, mine, grid.domain(),
-                         pressure.empty() ? nullptr : pressure.data());
-      });
+      const RankFrame rows(at, f, mine, grid.domain(), pressure.empty() ? nullptr : pressure.data(),
+                           reduction.number_density());
+      if (pieces) {
+        const int number = static_cast<int>(comm.max(static_cast<std::int64_t>(root ? out->frames() : 0)));
+        together(comm, [&] { rows.write_piece(scene.directory + "/" + piece_file_name(number, comm.rank())); });
+      } else {
+        const std::vector<FrameRow> own = frame_rows(rows.frame());
+        if (root && (at <= 0 || at >= scene.end)) f.release_storage();
+        whole.emplace(comm, own, scene.dimension, at, model.particles.n);
+      }
     }
-#ifdef ARKSPH_WITH_HYPRE
-    if (projection && projection->stats().solves > 0) {  // the last projection's pressure (as one process)
-      std::vector<double> p = gather.gather_values(comm, projection->pressure_ids(), projection->pressure());
-      if (root) out->set_pressure(std::move(p));
-    }
-#endif
     together(comm, [&] {
-      const std::vector<double> all = whole_state(false);
-      if (root) out->write(at, all.data(), d0, st);
+      if (root) out->record(diag, st, whole ? &whole->frame() : nullptr);
     });
-    if (root) rhs.release_storage();  // until the next frame (the whole model's list and fields)
   };
   if (!restarting) write_frame(0.0, integrator->stats());
 
@@ -517,7 +543,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     if (projection) out->set_projection_report(projection->stats(), HaloProjection::solver_name());
 #endif
     try {
-      out->finish(result, st, wall, rhs.evaluations() - diag_before + 1, reflected, f.exchanges());
+      out->finish(result, st, wall, diagnostic_evals, reflected, f.exchanges());
     } catch (const OutputError& e) {
       last = {result.exit_code ? result.exit_code : 5,
               result.message.empty() ? e.what() : result.message + "; " + e.what()};

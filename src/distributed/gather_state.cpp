@@ -52,23 +52,21 @@ std::vector<double> StateGather::allgather(const parallel::Communicator& comm, c
   return assemble(comm.allgatherv(records(mine)));
 }
 
-std::vector<double> StateGather::gather_values(const parallel::Communicator& comm, const std::vector<std::int64_t>& ids,
-                                               const std::vector<double>& values) const {
-  if (ids.size() != values.size()) throw std::logic_error("value gather: one value per particle");
-  std::vector<double> mine;
-  mine.reserve(2 * ids.size());
-  for (std::size_t a = 0; a < ids.size(); ++a) {
-    mine.push_back(std::bit_cast<double>(static_cast<std::uint64_t>(ids[a])));
-    mine.push_back(values[a]);
-  }
-  const std::vector<double> all = comm.gatherv(mine, 0);
-  if (comm.rank() != 0) return {};
-  if (all.size() != 2 * layout_.n) throw std::logic_error("value gather: the ranks hold another number of particles");
-  std::vector<double> out(layout_.n);
-  for (std::size_t r = 0; r < layout_.n; ++r) {
-    const auto it = place_.find(static_cast<std::int64_t>(std::bit_cast<std::uint64_t>(all[2 * r])));
-    if (it == place_.end()) throw std::logic_error("value gather: unknown particle id");
-    out[it->second] = all[2 * r + 1];
+std::vector<double> spread_by_id(const parallel::Communicator& comm, const std::vector<std::int64_t>& ids,
+                                 const std::vector<double>& values, std::size_t n) {
+  if (ids.size() != values.size()) throw std::logic_error("spread by id: one value per particle");
+  struct Entry {
+    std::int64_t id;
+    double value;
+  };
+  std::vector<Entry> mine(ids.size());
+  for (std::size_t a = 0; a < ids.size(); ++a) mine[a] = {ids[a], values[a]};
+  const std::vector<Entry> all = comm.allgatherv(mine);
+  if (all.size() != n) throw std::logic_error("spread by id: the ranks hold another number of particles");
+  std::vector<double> out(n);
+  for (const Entry& e : all) {
+    if (e.id < 0 || static_cast<std::size_t>(e.id) >= n) throw std::logic_error("spread by id: particle id out of range");
+    out[static_cast<std::size_t>(e.id)] = e.value;
   }
   return out;
 }

@@ -23,10 +23,6 @@ class StateGather {
   // Collective. The whole state in the model's layout on every rank (checkpoints: every rank then
   // deals the particles anew from it, distributed/distributed_run.cpp).
   std::vector<double> allgather(const parallel::Communicator& comm, const RankParticles& mine) const;
-  // Collective. One value per particle (values[i] of the particle with id ids[i], this rank's) in the
-  // model's particle order on rank 0 (the projection's pressure for the frames); other ranks: empty.
-  std::vector<double> gather_values(const parallel::Communicator& comm, const std::vector<std::int64_t>& ids,
-                                    const std::vector<double>& values) const;
 
  private:
   // This rank's particles as records: the id's bits, then the state entries in layout order.
@@ -37,5 +33,10 @@ class StateGather {
   StateLayout layout_;
   std::unordered_map<std::int64_t, std::size_t> place_;  // id -> index in the model
 };
+
+// Collective. One value per particle on every rank, indexed by particle id (the ids of a model of n
+// particles are 0 .. n - 1), from each rank's values of its own particles (ids[i], values[i]).
+std::vector<double> spread_by_id(const parallel::Communicator& comm, const std::vector<std::int64_t>& ids,
+                                 const std::vector<double>& values, std::size_t n);
 
 }  // namespace arksph::distributed

@@ -50,6 +50,11 @@ class HaloRhs {
   double local_max_acceleration() const { return max_accel_; }
   // The evaluator of the last eval: its fields hold this rank's particles first, then the halo.
   const RhsEvaluator& evaluator() const { return *evaluator_; }
+  // Frees the evaluator's neighbour list and fields until the next eval, which builds them anew
+  // (RhsEvaluator::release_storage): while rank 0 holds a whole frame or checkpoint.
+  void release_storage() {
+    if (evaluator_) evaluator_->release_storage();
+  }
   long exchanges() const { return exchanges_; }  // halo exchanges (each with a new neighbour list) so far
   // This rank's wall time in eval: halo exchanges (geometry, copies, the evaluator's new particle
   // set), halo updates (the all-to-all of each eval, waiting for the other ranks included) and the

@@ -7,15 +7,12 @@
 
 #include "core/errors.hpp"
 #include "diagnostics/exact_velocity.hpp"
-#include "diagnostics/ghia.hpp"
-#include "diagnostics/nearest_neighbor.hpp"
-#include "diagnostics/phase_interface.hpp"
+#include "diagnostics/frame_reduction.hpp"
 #include "diagnostics/poiseuille.hpp"
 #include "core/expression.hpp"
 #include "io/frame_order.hpp"
 #include "io/pvtp_writer.hpp"
 #include "io/vtp_writer.hpp"
-#include "projection/divergence_operator.hpp"
 
 namespace arksph {
 
@@ -24,7 +21,6 @@ using clock_type = std::chrono::steady_clock;
 double since(clock_type::time_point t0) {
   return std::chrono::duration<double>(clock_type::now() - t0).count();
 }
-double lid_speed(const Scene& s) { return std::hypot(s.sides[3].velocity[0], s.sides[3].velocity[1]); }
 double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 }  // namespace
 
@@ -60,18 +56,48 @@ std::vector<std::string> RunOutput::csv_columns() const {
 void RunOutput::write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats) {
   RhsEvaluator& rhs = *model_.rhs;
   rhs.eval(t, y, nullptr);  // fresh density, pressure, neighbours (timed as neighbors + rhs)
-  auto t0 = clock_type::now();
+  const auto t0 = clock_type::now();
   const FluidFields& f = rhs.fields();
-  last_ = flow_metrics(f, d0);
+  FrameReduction reduction(scene_);  // one process: its own sums are the totals
+  reduction.add({&f, f.n_real, d0.data(), model_.particles.phase.data()}, [](double, double) { return true; });
+  const FrameDiagnostics diag = reduction.finish(t, reduction.fluctuations());
+  if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
+    const double* p = projected_pressure() ? projected_pressure() : f.p.data();
+    std::vector<std::vector<double>> rows;
+    for (std::size_t a = 0; a < f.n_real; ++a) rows.push_back({f.x[a], f.u[a], p[a], f.rho[a]});
+    write_csv(scene_.directory + "/profile_1d.csv", {"x", "u", "pressure", "density"}, rows);
+  }
+  diagnostic_seconds_ += since(t0);
+  Frame fr;
+  fr.dimension = f.dim;
+  fr.n = f.n_real;
+  fr.time = t;
+  fr.x = f.x.data();
+  fr.y = f.dim == 2 ? f.y.data() : nullptr;
+  fr.u = f.u.data();
+  fr.v = f.dim == 2 ? f.v.data() : nullptr;
+  fr.pressure = projected_pressure() ? projected_pressure() : f.p.data();
+  fr.density = f.rho.data();
+  std::vector<double> rho_sum = reduction.number_density();  // Szewc eq. 21: m_a sum_b W_ab
+  for (std::size_t a = 0; a < f.n_real; ++a) rho_sum[a] *= f.m[a];
+  fr.summation_density = rho_sum.data();
+  fr.mass = f.m.data();
+  fr.id = model_.particles.id.data();
+  fr.phase = model_.particles.phase.data();
+  record(diag, stats, &fr);
+}
+
+void RunOutput::record(const FrameDiagnostics& diag, const ErkStats& stats, const Frame* whole) {
+  auto t0 = clock_type::now();
+  const double t = diag.t;
+  last_ = diag.metrics;
   last_t_ = t;
-  const StateLayout& L = rhs.layout();
-  last_divergence_ = divergence_rms(f, y + L.vel(0), L.dim == 2 ? y + L.vel(1) : nullptr);
+  last_divergence_ = diag.divergence_rms;
   std::vector<double> row = {t, stats.last_step, static_cast<double>(stats.steps), last_.kinetic_energy,
                              last_.max_speed, last_.cv, last_.density_mean, last_.density_rms};
   SteadySample sample{t, last_.kinetic_energy, {}};
   if (scene_.ghia_re) {
-    const GhiaErrors g = ghia_errors(f, scene_.ghia_re, scene_.min[0], scene_.min[1],
-                                     scene_.max[0] - scene_.min[0], lid_speed(scene_), scene_.spacing);
+    const GhiaErrors& g = diag.ghia;
     row.insert(row.end(), {g.u_linf, g.u_rms, g.v_linf, g.v_rms});
     sample.centreline = g.u_sph;
     sample.centreline.insert(sample.centreline.end(), g.v_sph.begin(), g.v_sph.end());
@@ -87,24 +113,24 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   if (scene_.poiseuille) {
     const double d = 0.5 * (scene_.max[1] - scene_.min[1]);
     const double tstar = poiseuille_tstar(t, d, scene_.viscosity);
-    const double eps = poiseuille_epsilon(f, scene_.min[1], scene_.max[1], scene_.viscosity, constant_force_x(scene_));
+    const double eps = diag.poiseuille_eps;
     row.insert(row.end(), {tstar, eps});
     if (tstar >= 0.5 - 1e-9 && tstar <= 2.0 + 1e-9 && std::isfinite(eps))
       eps_max_window_ = std::max(eps_max_window_, eps);
     case_metrics_.set("poiseuille_rms", eps).set("poiseuille_tstar", tstar);
     std::vector<std::vector<double>> prof;  // per particle at the latest output time (Basa Fig. 4)
-    for (std::size_t a = 0; a < f.n_real; ++a) {
-      const double exact = poiseuille_velocity(f.y[a] - 0.5 * (scene_.min[1] + scene_.max[1]), t, d,
+    const std::vector<double>& yu = diag.poiseuille_profile;
+    for (std::size_t k = 0; k + 1 < yu.size(); k += 2) {
+      const double exact = poiseuille_velocity(yu[k] - 0.5 * (scene_.min[1] + scene_.max[1]), t, d,
                                                scene_.viscosity, constant_force_x(scene_));
-      prof.push_back({f.y[a], f.u[a], exact});
+      prof.push_back({yu[k], yu[k + 1], exact});
     }
     write_csv(scene_.directory + "/poiseuille_profile.csv", {"y", "u_sph", "u_exact"}, prof);
     case_metrics_.set("poiseuille_eps_max_tstar_0.5_2", eps_max_window_);
   }
   if (scene_.interface) {
-    const PhaseInterface pi = phase_interface(f, model_.particles.phase, scene_.min[0], scene_.min[1], scene_.max[0],
-                                              scene_.max[1], scene_.spacing);
-    const PhaseDensity pd = upper_phase_density(f, model_.particles.phase, number_density(f));
+    const PhaseInterface& pi = diag.interface;
+    const PhaseDensity& pd = diag.upper_density;
     row.insert(row.end(), {pi.bubble_y, pi.spike_y, pd.mean, pd.rms});
     case_metrics_.set("bubble_y", pi.bubble_y).set("spike_y", pi.spike_y);
     case_metrics_.set("upper_density_mean", pd.mean).set("upper_density_rms", pd.rms);
@@ -114,8 +140,8 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     std::snprintf(name, sizeof name, "/interface_%06d.csv", frames_);
     write_csv(scene_.directory + name, {"x0", "y0", "x1", "y1"}, seg);
   }
-  if (const ExactVelocity exact(scene_.exact_velocity); exact.enabled()) {
-    const ExactVelocityErrors e = exact.errors(f);
+  if (ExactVelocity(scene_.exact_velocity).enabled()) {
+    const ExactVelocityErrors& e = diag.exact;
     row.insert(row.end(), {e.l1_relative, e.peak_speed_error, e.amplitude_error});
     case_metrics_.set("velocity_l1_relative", e.l1_relative).set("peak_speed_error", e.peak_speed_error);
     case_metrics_.set("amplitude_error", e.amplitude_error);
@@ -124,14 +150,8 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     if (steady_.add(std::move(sample)) && steady_time_ < 0) steady_time_ = t;
     row.push_back(steady_.rate());
   }
-  if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
-    const double* p = projected_pressure() ? projected_pressure() : f.p.data();
-    std::vector<std::vector<double>> rows;
-    for (std::size_t a = 0; a < f.n_real; ++a) rows.push_back({f.x[a], f.u[a], p[a], f.rho[a]});
-    write_csv(scene_.directory + "/profile_1d.csv", {"x", "u", "pressure", "density"}, rows);
-  }
   {  // nearest-neighbour distances at the latest output time (Szewc Figs. 7, 18)
-    const Histogram hist = nearest_neighbor_histogram(f, scene_.spacing);
+    const Histogram& hist = diag.nearest;
     std::vector<std::vector<double>> rows;
     for (std::size_t k = 0; k < hist.counts.size(); ++k)
       rows.push_back({k * hist.bin_width, (k + 1) * hist.bin_width, static_cast<double>(hist.counts[k])});
@@ -148,26 +168,10 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
     for (int r = 0; r < pieces_; ++r) pieces.push_back(piece_file_name(frames_, r));
     write_pvtp(scene_.directory + "/" + name, pieces);
     pvd_->add(t, name);
-  } else if (pvd_) {
+  } else if (pvd_ && whole) {
     char name[64];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
-    Frame fr;
-    fr.dimension = f.dim;
-    fr.n = f.n_real;
-    fr.time = t;
-    fr.x = f.x.data();
-    fr.y = f.dim == 2 ? f.y.data() : nullptr;
-    fr.u = f.u.data();
-    fr.v = f.dim == 2 ? f.v.data() : nullptr;
-    fr.pressure = projected_pressure() ? projected_pressure() : f.p.data();
-    fr.density = f.rho.data();
-    std::vector<double> rho_sum = number_density(f);  // Szewc eq. 21: m_a sum_b W_ab
-    for (std::size_t a = 0; a < f.n_real; ++a) rho_sum[a] *= f.m[a];
-    fr.summation_density = rho_sum.data();
-    fr.mass = f.m.data();
-    fr.id = model_.particles.id.data();
-    fr.phase = model_.particles.phase.data();
-    write_vtp(scene_.directory + "/" + name, FrameInIdOrder(fr).frame());  // rows by id (io/frame_order.hpp)
+    write_vtp(scene_.directory + "/" + name, FrameInIdOrder(*whole).frame());  // rows by id (io/frame_order.hpp)
     pvd_->add(t, name);
   }
   ++frames_;
@@ -175,7 +179,6 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
 }
 
 const double* RunOutput::projected_pressure() const {
-  if (!pressure_.empty()) return pressure_.data();
   return model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data() : nullptr;
 }
 

@@ -7,9 +7,11 @@
 #include "run/setup.hpp"
 #include "run/simulation.hpp"
 #include "diagnostics/flow_metrics.hpp"
+#include "diagnostics/frame_reduction.hpp"
 #include "diagnostics/steady_state.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
+#include "io/frame.hpp"
 #include "io/summary_json.hpp"
 
 namespace arksph {
@@ -25,6 +27,10 @@ class RunOutput {
   // Refreshes the fields at (t, y), computes the metrics, writes a frame (rows in id order) and a
   // CSV row. Throws OutputError when a file cannot be written.
   void write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats);
+  // A frame whose diagnostics were computed elsewhere (a decomposed run reduces them over its ranks,
+  // diagnostics/frame_reduction.hpp): the CSV row and files of `diag`, and the frame: the pieces'
+  // index (set_pieces), else `whole` (rows in any order, written in id order; null: no frame file).
+  void record(const FrameDiagnostics& diag, const ErkStats& stats, const Frame* whole);
   // Writes summary.json (also after a failure: status "failed" with the diagnosis). Throws OutputError.
   void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
               long wall_reflections, long neighbor_rebuilds);
@@ -46,13 +52,11 @@ class RunOutput {
   void set_pieces(int ranks) { pieces_ = ranks; }
   int frames() const { return frames_; }  // frames written so far: the number of the next one
   // A run whose projection is not the model's (the decomposed ISPH run, distributed/halo_projection.hpp):
-  // summary.json's "ppe" from these counters and solver name, and the frames' pressure from
-  // set_pressure (the model's particle order, the last projection's; until set, as before).
+  // summary.json's "ppe" from these counters and solver name.
   void set_projection_report(const ProjectionStats& stats, const std::string& solver) {
     ppe_stats_ = stats;
     ppe_solver_ = solver;
   }
-  void set_pressure(std::vector<double> pressure) { pressure_ = std::move(pressure); }
   void set_reorders(long count, double seconds) {
     reorders_ = count;
     reorder_seconds_ = seconds;
@@ -85,7 +89,6 @@ class RunOutput {
   double reorder_seconds_ = 0;
   std::string ppe_solver_;  // empty: the model's projection reports itself
   ProjectionStats ppe_stats_;
-  std::vector<double> pressure_;  // the projection's pressure when not the model's (set_pressure)
   const double* projected_pressure() const;
 };
 

@@ -8,6 +8,9 @@
 #include <stdexcept>
 
 #include <sys/resource.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
@@ -77,6 +80,15 @@ parallel::Domain domain_of(const Scene& scene) {
     d.periodic[k] = scene.sides[2 * k].kind == SideKind::periodic;
   }
   return d;
+}
+
+// Hands the heap's free memory back to the system (glibc), after a rank has held the output's
+// buffers: freed blocks below glibc's mmap threshold stay in the heap, where the evaluator's
+// storage, built anew after them, cannot always reuse them, and the resident set would keep both.
+void return_free_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 }
 
 parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector<std::int64_t>& counts, int ranks,
@@ -158,7 +170,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
                 scene.scheme.c_str(), model.particles.n, scene.dimension, scene.spacing, model.h, scene.kernel.c_str(),
                 scene.integrator.c_str());
     std::printf("  output: %s (%s)\n", scene.directory.c_str(),
-                scene.pieces ? "a frame piece per rank, the rest gathered on rank 0" : "gathered on rank 0");
+                scene.pieces ? "a frame piece per rank" : "frames joined on rank 0");
     std::fflush(stdout);
   }
   std::vector<double> y0(layout.size());
@@ -174,11 +186,18 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     if (scene.reorder_every > 0) mine.sort_by_cell(scene.min.data(), rhs.kernel().radius());
   };
   sort_mine();
+  // The whole model is never evaluated: the initial state, its evaluator's particle data and the
+  // model's initial positions go now (a new deal reads only masses, densities, phases and ids; the
+  // initial velocities stay until the state checker has read them).
+  std::vector<double>().swap(y0);
+  rhs.release_particles();
+  for (auto* v : {&model.particles.init_pos[0], &model.particles.init_pos[1]}) std::vector<double>().swap(*v);
   HaloRhs f(scene, model, comm, mine);
   f.set_decomposition(*decomposition);
   // The initial state's fields on the ranks: the number density d0 of every particle by id (C&R's
   // CV, and the frames' reference), and the largest acceleration, which every rank's state checker
-  // takes for its speed bound.
+  // takes for its speed bound. The rank's evaluator storage is freed before d0 is shared (the next
+  // evaluation, at the same state, builds the same neighbour list anew).
   long diagnostic_evals = 1;
   std::vector<double> d0_by_id;
   double accel0 = 0;
@@ -189,9 +208,10 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     f.eval(0.0, y.data(), nullptr);  // the fields with their pair list, as a frame's
     std::vector<double> d0 = number_density(f.evaluator().fields());
     d0.resize(mine.size());
+    f.release_storage();
     d0_by_id = spread_by_id(comm, mine.ids(), d0, model.particles.n);
+    return_free_memory();
   }
-  std::vector<double>().swap(y0);
   // Restart: the model's particles in the checkpoint's order (every rank read the checkpoint), checked
   // against the scene; rank 0 reads the earlier output before RunOutput truncates it.
   if (options.restart) adopt_particle_order(model, options.restart->id);
@@ -206,14 +226,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
                                     scene.every);
   });
   const StateChecker checker(scene, model, accel0);
-  // The whole model's evaluator is never evaluated: its particle data and the model's initial
-  // positions and velocities go (a new deal reads only masses, densities, phases and ids).
-  rhs.release_particles();
-  {
-    ParticleSet& all = model.particles;
-    for (auto* v : {&all.init_pos[0], &all.init_pos[1], &all.init_vel[0], &all.init_vel[1]})
-      std::vector<double>().swap(*v);
-  }
+  for (auto* v : {&model.particles.init_vel[0], &model.particles.init_vel[1]}) std::vector<double>().swap(*v);
   if (restarting) {  // the checkpoint's state, dealt anew
     const std::vector<double>& yr = checkpoints->restart().state;
     together(comm, [&] { checker.check(checkpoints->start_time(), yr.data()); });  // NaN, blow-up, escape in the file
@@ -346,15 +359,22 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       if (pieces) {
         const int number = static_cast<int>(comm.max(static_cast<std::int64_t>(root ? out->frames() : 0)));
         together(comm, [&] { rows.write_piece(scene.directory + "/" + piece_file_name(number, comm.rank())); });
-      } else {
+      } else if (root && (at <= 0 || at >= scene.end)) {
         const std::vector<FrameRow> own = frame_rows(rows.frame());
-        if (root && (at <= 0 || at >= scene.end)) f.release_storage();
+        f.release_storage();
+        return_free_memory();
         whole.emplace(comm, own, scene.dimension, at, model.particles.n);
+      } else {
+        whole.emplace(comm, rows.frame(), model.particles.n);
       }
     }
     together(comm, [&] {
       if (root) out->record(diag, st, whole ? &whole->frame() : nullptr);
     });
+    if (whole && root) {
+      whole.reset();
+      return_free_memory();
+    }
   };
   if (!restarting) write_frame(0.0, integrator->stats());
 

@@ -1,5 +1,6 @@
 #include "distributed/rank_frame.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "io/frame_order.hpp"
@@ -41,43 +42,70 @@ RankFrame::RankFrame(double t, const HaloRhs& f, const RankParticles& mine, cons
 
 void RankFrame::write_piece(const std::string& path) const { write_vtp(path, FrameInIdOrder(frame_).frame()); }
 
+namespace {
+FrameRow row_of(const Frame& f, std::size_t a) {
+  const bool two_d = f.dimension == 2;
+  return {f.id[a],          f.phase[a],       0,      f.x[a],       two_d ? f.y[a] : 0.0,     f.u[a],
+          two_d ? f.v[a] : 0.0, f.pressure[a], f.density[a], f.summation_density[a], f.mass[a]};
+}
+}  // namespace
+
 std::vector<FrameRow> frame_rows(const Frame& mine) {
-  const bool two_d = mine.dimension == 2;
   std::vector<FrameRow> rows(mine.n);
-  for (std::size_t a = 0; a < mine.n; ++a)
-    rows[a] = {mine.id[a],          mine.phase[a],   0,
-               mine.x[a],           two_d ? mine.y[a] : 0.0,
-               mine.u[a],           two_d ? mine.v[a] : 0.0,
-               mine.pressure[a],    mine.density[a],
-               mine.summation_density[a], mine.mass[a]};
+  for (std::size_t a = 0; a < mine.n; ++a) rows[a] = row_of(mine, a);
   return rows;
+}
+
+JoinedFrame::JoinedFrame(const parallel::Communicator& comm, const Frame& mine, std::size_t n) {
+  join(comm, mine.n, [&](std::size_t a) { return row_of(mine, a); }, mine.dimension, mine.time, n);
 }
 
 JoinedFrame::JoinedFrame(const parallel::Communicator& comm, const std::vector<FrameRow>& mine, int dimension,
                          double time, std::size_t n) {
+  join(comm, mine.size(), [&](std::size_t a) { return mine[a]; }, dimension, time, n);
+}
+
+template <class Row>
+void JoinedFrame::join(const parallel::Communicator& comm, std::size_t count, Row&& row, int dimension, double time,
+                       std::size_t n) {
+  const bool root = comm.rank() == 0;
   const bool two_d = dimension == 2;
-  const std::vector<FrameRow> all = comm.gatherv(mine, 0);
   frame_.dimension = dimension;
   frame_.time = time;
-  if (comm.rank() != 0) return;
-  if (all.size() != n) throw std::logic_error("joined frame: the ranks hold another number of particles");
-  for (auto* v : {&x_, &y_, &u_, &v_, &p_, &rho_, &rho_sum_, &m_}) v->resize(n);
-  id_.resize(n);
-  phase_.resize(n);
-  for (const FrameRow& r : all) {
-    if (r.id < 0 || static_cast<std::size_t>(r.id) >= n) throw std::logic_error("joined frame: particle id out of range");
-    const auto k = static_cast<std::size_t>(r.id);
-    id_[k] = r.id;
-    phase_[k] = r.phase;
-    x_[k] = r.x;
-    y_[k] = r.y;
-    u_[k] = r.u;
-    v_[k] = r.v;
-    p_[k] = r.p;
-    rho_[k] = r.rho;
-    rho_sum_[k] = r.rho_sum;
-    m_[k] = r.m;
+  if (root) {
+    for (auto* v : {&x_, &y_, &u_, &v_, &p_, &rho_, &rho_sum_, &m_}) v->resize(n);
+    id_.assign(n, -1);
+    phase_.resize(n);
   }
+  const auto rounds = static_cast<std::int64_t>((count + kJoinRows - 1) / kJoinRows);
+  const std::int64_t all_rounds = comm.max(rounds);
+  std::size_t received = 0;
+  std::vector<FrameRow> chunk;
+  for (std::int64_t r = 0; r < all_rounds; ++r) {
+    const std::size_t first = std::min(count, static_cast<std::size_t>(r) * kJoinRows);
+    const std::size_t last = std::min(count, first + kJoinRows);
+    chunk.clear();
+    for (std::size_t a = first; a < last; ++a) chunk.push_back(row(a));
+    const std::vector<FrameRow> all = comm.gatherv(chunk, 0);
+    received += all.size();
+    for (const FrameRow& w : all) {
+      if (w.id < 0 || static_cast<std::size_t>(w.id) >= n)
+        throw std::logic_error("joined frame: particle id out of range");
+      const auto k = static_cast<std::size_t>(w.id);
+      id_[k] = w.id;
+      phase_[k] = w.phase;
+      x_[k] = w.x;
+      y_[k] = w.y;
+      u_[k] = w.u;
+      v_[k] = w.v;
+      p_[k] = w.p;
+      rho_[k] = w.rho;
+      rho_sum_[k] = w.rho_sum;
+      m_[k] = w.m;
+    }
+  }
+  if (!root) return;
+  if (received != n) throw std::logic_error("joined frame: the ranks hold another number of particles");
   frame_.n = n;
   frame_.x = x_.data();
   frame_.y = two_d ? y_.data() : nullptr;

@@ -44,14 +44,22 @@ struct FrameRow {
 std::vector<FrameRow> frame_rows(const Frame& frame);
 
 // Collective. Every rank's rows joined on rank 0 in id order (the ids of a model of n particles are
-// 0 .. n - 1); the other ranks hold an empty frame.
+// 0 .. n - 1); the other ranks hold an empty frame. The rows travel in rounds of at most
+// kJoinRows a rank, so that a rank holds no copy of its rows beyond one round's.
 class JoinedFrame {
  public:
+  static constexpr std::size_t kJoinRows = 65536;
+  // `mine`: the rank's rows, read row by row during the join (a view of live fields or a copy).
+  JoinedFrame(const parallel::Communicator& comm, const Frame& mine, std::size_t n);
+  // The same from a copy of the rank's rows.
   JoinedFrame(const parallel::Communicator& comm, const std::vector<FrameRow>& mine, int dimension, double time,
               std::size_t n);
   const Frame& frame() const { return frame_; }
 
  private:
+  template <class Row>
+  void join(const parallel::Communicator& comm, std::size_t count, Row&& row, int dimension, double time,
+            std::size_t n);
   std::vector<double> x_, y_, u_, v_, p_, rho_, rho_sum_, m_;
   std::vector<std::int64_t> id_;
   std::vector<std::int32_t> phase_;

@@ -5,8 +5,13 @@
 
 namespace arksph::distributed {
 
-StateGather::StateGather(const std::vector<std::int64_t>& ids, const StateLayout& layout) : layout_(layout) {
-  for (std::size_t i = 0; i < ids.size(); ++i) place_[ids[i]] = i;
+StateGather::StateGather(const std::vector<std::int64_t>& ids, const StateLayout& layout)
+    : layout_(layout), place_(ids.size(), kNowhere) {
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (ids[i] < 0 || static_cast<std::size_t>(ids[i]) >= ids.size())
+      throw std::logic_error("state gather: the model's ids are not 0 .. n - 1");
+    place_[static_cast<std::size_t>(ids[i])] = i;
+  }
 }
 
 std::size_t StateGather::stride() const {
@@ -18,12 +23,19 @@ std::vector<double> StateGather::records(const RankParticles& mine) const {
   const std::size_t per = L.n ? L.size() / L.n : 0;
   const std::size_t stride = this->stride();
   if (L.n && per + 1 != stride) throw std::logic_error("state gather: unexpected layout");
-  const std::vector<double> y = mine.state();
+  // The state's fields in the layout's order (positions, velocities, density, energy), read from
+  // the rank's records: no copy of the rank's state.
+  const RankFieldIndex& ix = mine.index();
+  std::vector<const double*> fields;
+  for (int k = 0; k < ix.dim; ++k) fields.push_back(mine.fields().field[static_cast<std::size_t>(ix.state_pos(k))].data());
+  for (int k = 0; k < ix.dim; ++k) fields.push_back(mine.fields().field[static_cast<std::size_t>(ix.vel(k))].data());
+  if (ix.density) fields.push_back(mine.fields().field[static_cast<std::size_t>(ix.rho())].data());
+  if (ix.energy) fields.push_back(mine.fields().field[static_cast<std::size_t>(ix.e())].data());
   std::vector<double> out;
   out.reserve(L.n * stride);
   for (std::size_t a = 0; a < L.n; ++a) {
     out.push_back(std::bit_cast<double>(mine.fields().id[a]));
-    for (std::size_t b = 0; b + 1 < stride; ++b) out.push_back(y[b * L.n + a]);
+    for (const double* field : fields) out.push_back(field[a]);
   }
   return out;
 }
@@ -35,9 +47,9 @@ std::vector<double> StateGather::assemble(const std::vector<double>& all) const 
   if (all.size() != n * stride) throw std::logic_error("state gather: the ranks hold another number of particles");
   for (std::size_t r = 0; r < n; ++r) {
     const double* rec = all.data() + r * stride;
-    const auto it = place_.find(static_cast<std::int64_t>(std::bit_cast<std::uint64_t>(rec[0])));
-    if (it == place_.end()) throw std::logic_error("state gather: unknown particle id");
-    for (std::size_t b = 0; b + 1 < stride; ++b) out[b * n + it->second] = rec[1 + b];
+    const auto id = std::bit_cast<std::uint64_t>(rec[0]);
+    if (id >= place_.size() || place_[id] == kNowhere) throw std::logic_error("state gather: unknown particle id");
+    for (std::size_t b = 0; b + 1 < stride; ++b) out[b * n + place_[id]] = rec[1 + b];
   }
   return out;
 }

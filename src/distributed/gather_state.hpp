@@ -5,7 +5,6 @@
 // (docs/parallel.md).
 #pragma once
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "core/particles.hpp"
@@ -31,7 +30,8 @@ class StateGather {
   std::vector<double> assemble(const std::vector<double>& all) const;
   std::size_t stride() const;
   StateLayout layout_;
-  std::unordered_map<std::int64_t, std::size_t> place_;  // id -> index in the model
+  static constexpr std::size_t kNowhere = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> place_;  // id -> index in the model (ids are 0 .. n - 1)
 };
 
 // Collective. One value per particle on every rank, indexed by particle id (the ids of a model of n

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/resize_with_headroom.hpp"
 #include "kernels/kernel.hpp"
 #include "rhs/terms.hpp"
 
@@ -164,7 +165,7 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
 
   // The evaluator's state: this rank's particles, then the halo copies.
   const StateLayout& L = evaluator_->layout();
-  y_all_.resize(L.size());
+  resize_with_headroom(y_all_, L.size());  // the halo grows by a few copies at some exchanges
   const auto place = [&](int field, std::size_t at) {
     const auto& own = F.field[static_cast<std::size_t>(field)];
     const auto& copy = halo_.field[static_cast<std::size_t>(field)];
@@ -182,7 +183,7 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
     seconds_.evaluator += seconds_since(t_eval);
     return;
   }
-  ydot_all_.resize(L.size());
+  resize_with_headroom(ydot_all_, L.size());
   evaluator_->eval(t, y_all_.data(), ydot_all_.data());
 
   // This rank's derivatives, in its own layout.

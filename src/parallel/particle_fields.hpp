@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/resize_with_headroom.hpp"
+
 namespace arksph::parallel {
 
 struct ParticleFields {
@@ -32,8 +34,8 @@ struct ParticleFields {
     for (auto& f : field) f.clear();
   }
   void resize(std::size_t n) {
-    id.resize(n);
-    for (auto& f : field) f.resize(n);
+    resize_with_headroom(id, n);
+    for (auto& f : field) resize_with_headroom(f, n);
   }
   void position(std::size_t i, double* x) const {
     for (int a = 0; a < dim; ++a) x[a] = field[static_cast<std::size_t>(a)][i];

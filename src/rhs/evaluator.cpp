@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/particle_order.hpp"
+#include "core/resize_with_headroom.hpp"
 #include "core/scheme.hpp"
 #include "rhs/term_registry.hpp"
 
@@ -174,9 +175,9 @@ double RhsEvaluator::load_state(double t, const double* y) {
   const bool two_d = layout_.dim == 2;
   f.t = t;
   // Sized to n (shrinking from n_all keeps the storage: no allocation, no fill); ghosts come later.
-  for (auto* v : {&f.x, &f.u, &f.ud, &f.rho, &f.p}) v->resize(n);
+  for (auto* v : {&f.x, &f.u, &f.ud, &f.rho, &f.p}) resize_with_headroom(*v, n);
   if (two_d)
-    for (auto* v : {&f.y, &f.v, &f.vd}) v->resize(n);
+    for (auto* v : {&f.y, &f.v, &f.vd}) resize_with_headroom(*v, n);
   if (layout_.has_energy) f.e.assign(y + layout_.energy(), y + layout_.energy() + n);
   const double* yx = y + layout_.pos(0);
   const double* yy = two_d ? y + layout_.pos(1) : nullptr;
@@ -293,8 +294,8 @@ void RhsEvaluator::sum_stages(Partition part) {
       ghosts_.copy_pressure(f);
       done = term->stage();
       if (done == Term::Stage::force) {
-        f.vol.resize(f.n_all);
-        f.mu.resize(f.n_all);
+        resize_with_headroom(f.vol, f.n_all);
+        resize_with_headroom(f.mu, f.n_all);
 #pragma omp parallel for schedule(static) if (f.n_all > kCheapLoopParallelMin)
         for (std::size_t i = 0; i < f.n_all; ++i) {
           f.vol[i] = f.m[i] / f.rho[i];

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/resize_with_headroom.hpp"
 #include "core/scheme.hpp"
 
 namespace arksph {
@@ -46,15 +47,15 @@ void GhostField::refresh(FluidFields& f, const std::vector<double>& mass, bool r
   room(f.src);
   f.x.insert(f.x.end(), set_.x.begin(), set_.x.end());
   if (two_d) f.y.insert(f.y.end(), set_.y.begin(), set_.y.end());
-  for (auto* field : {&f.u, &f.ud, &f.rho, &f.p}) field->resize(f.n_all);  // ghost values: below and at each stage
+  for (auto* field : {&f.u, &f.ud, &f.rho, &f.p}) resize_with_headroom(*field, f.n_all);  // ghost values: below and at each stage
   if (two_d)
-    for (auto* field : {&f.v, &f.vd}) field->resize(f.n_all);
+    for (auto* field : {&f.v, &f.vd}) resize_with_headroom(*field, f.n_all);
   // Constant between rebuilds (the ghosts keep their sources and places): set only at a rebuild.
   if (rebuild) {
     f.m.assign(mass.begin(), mass.end());
-    f.m.resize(f.n_all);
+    resize_with_headroom(f.m, f.n_all);
     for (std::size_t g = 0; g < ng; ++g) f.m[n + g] = f.m[set_.source[g]];
-    f.src.resize(f.n_all);
+    resize_with_headroom(f.src, f.n_all);
     for (std::size_t a = 0; a < n; ++a) f.src[a] = static_cast<std::uint32_t>(a);
     for (std::size_t g = 0; g < ng; ++g) f.src[n + g] = set_.source[g];
     f.flip_x.assign(f.n_all, 1.0);
@@ -129,7 +130,7 @@ void GhostField::set_velocities(FluidFields& f) const {
 }
 
 void GhostField::copy(std::vector<double>& field) const {
-  field.resize(n_all_);
+  resize_with_headroom(field, n_all_);
   for (std::size_t g = 0; g < set_.size(); ++g) field[n_real_ + g] = field[set_.source[g]];
 }
 

@@ -108,6 +108,7 @@ void HaloRhs::build_evaluator() {
   for (std::uint64_t id : halo_.id) set.id.push_back(static_cast<std::int64_t>(id));
   if (evaluator_) {
     evaluator_->replace_particles(std::move(set));
+    evaluator_->set_derivative_count(F.size());  // the halo copies' derivatives are discarded
     return;
   }
   RhsOptions options;
@@ -115,6 +116,7 @@ void HaloRhs::build_evaluator() {
   evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),
                                               terms_from_scene(scene_, model_.sound_speed), options);
   evaluator_->set_slip_origin(slip_on_, slip_t0_);
+  evaluator_->set_derivative_count(F.size());
 }
 
 void HaloRhs::set_slip_origin(bool on, double t0) {

@@ -262,19 +262,22 @@ void RhsEvaluator::viscous_acceleration(const double* u, const double* v, double
   f.vd.swap(keep_vd_);
 }
 
-// Terms [first, last) particle by particle: each particle's neighbourhood is gathered once (kernel
-// values included) and handed to every term in order. Same sums, in the same order, as applying the
-// terms one after another over the pair list.
-void RhsEvaluator::sweep(std::size_t first, std::size_t last) {
+// Terms [first, last) particle by particle, for the first `count` real particles: each particle's
+// neighbourhood is gathered once (kernel values included) and handed to every term in order. Same
+// sums, in the same order, as applying the terms one after another over the pair list.
+void RhsEvaluator::sweep(std::size_t first, std::size_t last, std::size_t count) {
   FluidFields& f = fields_;
   bool with_w = f.correction != FluidFields::Correction::none;
   for (std::size_t k = first; k < last; ++k) with_w = with_w || (!taken_[k] && terms_[k]->reads_kernel_value());
   const std::unique_ptr<Term>* terms = terms_.data();
   const char* taken = taken_.data();
-  neighbors_.sweep(f, with_w, [&f, terms, taken, first, last](std::size_t a, const Neighborhood& nb) {
-    for (std::size_t k = first; k < last; ++k)
-      if (!taken[k]) terms[k]->apply_particle(f, a, nb);
-  });
+  neighbors_.sweep(
+      f, with_w,
+      [&f, terms, taken, first, last](std::size_t a, const Neighborhood& nb) {
+        for (std::size_t k = first; k < last; ++k)
+          if (!taken[k]) terms[k]->apply_particle(f, a, nb);
+      },
+      count);
 }
 
 // Adds the terms of `part` to the derivatives in stage order. On entering a stage the ghosts take
@@ -311,7 +314,7 @@ void RhsEvaluator::sum_stages(Partition part) {
       std::size_t last = k + 1;
       while (last < terms_.size() && terms_[last]->per_particle() && terms_[last]->stage() == done && in(part, last))
         ++last;
-      sweep(k, last);
+      sweep(k, last, done == Term::Stage::force ? derivative_count_ : f.n_real);
       k = last;
       continue;
     }

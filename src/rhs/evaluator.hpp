@@ -83,6 +83,12 @@ class RhsEvaluator {
   // constant per-particle data and the state size follow; the neighbour list and ghosts are built
   // at the next eval, into the storage of the old ones. fields() are stale until then.
   void replace_particles(ParticleSet particles);
+  // Only the first n real particles' derivatives are wanted (one rank's own particles; the rest are
+  // its halo copies, whose derivatives are discarded): the force stage's per-particle sweep skips the
+  // others. The stages before it (density, pressure) and the force terms with loops of their own
+  // still cover every real particle, whose values the first n read. Those terms write a
+  // particle's own derivatives only, so the first n get the bits of a sweep over all.
+  void set_derivative_count(std::size_t n) { derivative_count_ = n; }
   // Frees the neighbour list, the stored pairs and the per-point fields that the next eval fills
   // anew (it rebuilds the list and the ghosts): a caller that will not evaluate for a while (the
   // whole model of a decomposed run between output frames). fields() are empty until then.
@@ -111,7 +117,7 @@ class RhsEvaluator {
   double store_derivatives(const double* y, double* ydot) const;
   void sum_stages(Partition part);
   void implicit_acceleration(std::vector<double>& au, std::vector<double>& av);
-  void sweep(std::size_t first, std::size_t last);
+  void sweep(std::size_t first, std::size_t last, std::size_t count);
 
   StateLayout layout_;
   ParticleSet particles_;
@@ -130,6 +136,7 @@ class RhsEvaluator {
   bool periodic_[2] = {false, false};
   double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;
+  std::size_t derivative_count_ = static_cast<std::size_t>(-1);  // set_derivative_count; all by default
   long evals_ = 0;
   RhsTiming timing_;
   std::vector<double> implicit_u_, implicit_v_;  // IMEX: f_I's acceleration of the last eval

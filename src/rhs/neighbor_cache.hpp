@@ -9,6 +9,7 @@
 //                                              particle's neighbourhood gathered from its candidates
 //                                              into a per-thread buffer, nothing stored per pair.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <vector>
@@ -43,10 +44,11 @@ class NeighborCache {
   void rebuild(const FluidFields& f);
   // f.pairs for `use` (stored, lean, or marked stale for none) from the current list.
   void provide_pairs(FluidFields& f, PairUse use) const;
-  // body(a, nb) for every real particle a of f with its gathered neighbourhood nb, in parallel
-  // (each a on one thread; its sums do not depend on which). W_ab is gathered only `with_w`.
+  // body(a, nb) for the first `count` real particles a of f (all: count >= f.n_real) with their
+  // gathered neighbourhoods nb, in parallel (each a on one thread; its sums do not depend on which).
+  // W_ab is gathered only `with_w`.
   template <class Body>
-  void sweep(const FluidFields& f, bool with_w, Body&& body);
+  void sweep(const FluidFields& f, bool with_w, Body&& body, std::size_t count);
 
   // The next rebuild check finds the list stale (a restart from a checkpoint: same pair order).
   void invalidate() { ref_x_.clear(); }
@@ -69,10 +71,10 @@ class NeighborCache {
 };
 
 template <class Body>
-void NeighborCache::sweep(const FluidFields& f, bool with_w, Body&& body) {
+void NeighborCache::sweep(const FluidFields& f, bool with_w, Body&& body, std::size_t count) {
   const double* x = f.x.data();
   const double* y = f.dim == 2 ? f.y.data() : nullptr;
-  const std::size_t n = f.n_real;
+  const std::size_t n = std::min(f.n_real, count);
   const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
   if (scratch_.size() < threads) scratch_.resize(threads);
   for (Neighborhood& nb : scratch_) {

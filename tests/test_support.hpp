@@ -116,10 +116,9 @@ inline std::vector<double> one_projected_step(const Scene& scene, Model& model, 
 struct MomentumRate {
   double px = 0, py = 0, scale = 0;
 };
-inline MomentumRate momentum_rate(const Scene& scene, unsigned seed) {
-  Model model = build_model(scene);
-  ParticleSet ps = model.particles;
-  std::mt19937 rng(seed);
+// The particles of `lattice` (a 2D scene's model) moved by up to +-0.2 dx, with velocities drawn from
+// [-1, 1] per component: a disordered set on which every pair term has work to do.
+inline ParticleSet jittered(const Scene& scene, ParticleSet ps, std::mt19937& rng) {
   std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), vel(-1, 1);
   for (std::size_t a = 0; a < ps.n; ++a) {
     ps.init_pos[0][a] += jitter(rng);
@@ -127,6 +126,14 @@ inline MomentumRate momentum_rate(const Scene& scene, unsigned seed) {
     ps.init_vel[0][a] = vel(rng);
     ps.init_vel[1][a] = vel(rng);
   }
+  return ps;
+}
+
+inline MomentumRate momentum_rate(const Scene& scene, unsigned seed) {
+  Model model = build_model(scene);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> vel(-1, 1);
+  const ParticleSet ps = jittered(scene, model.particles, rng);
   RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
   std::vector<double> y(rhs.layout().size()), ydot(y.size());
   rhs.initial_state(y.data());

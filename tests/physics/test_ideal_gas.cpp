@@ -44,15 +44,9 @@ TEST_CASE("ideal gas: the energy equation conserves total energy with the symmet
                                         {"method.equation_of_state=ideal_gas", "fluid.viscosity=0",
                                          "method.pressure_gradient=monaghan", "method.density_mode=" + dm}, w);
     Model model = build_model(scene);
-    ParticleSet ps = model.particles;
     std::mt19937 rng(3);
-    std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), r(-1, 1);
-    for (std::size_t a = 0; a < ps.n; ++a) {
-      ps.init_pos[0][a] += jitter(rng);
-      ps.init_pos[1][a] += jitter(rng);
-      ps.init_vel[0][a] = r(rng);
-      ps.init_vel[1][a] = r(rng);
-    }
+    std::uniform_real_distribution<double> r(-1, 1);
+    const ParticleSet ps = testing::jittered(scene, model.particles, rng);
     RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
     const auto& L = rhs.layout();
     std::vector<double> y(L.size()), ydot(y.size());

@@ -16,23 +16,17 @@ using namespace arksph;
 
 namespace {
 
-// ydot of the scene's right-hand side on its lattice jittered by +-0.2 dx, with random velocities
-// and densities perturbed by 1 %, the force sweep restricted to the first `count` particles.
+// ydot of the scene's right-hand side on its jittered lattice (test_support.hpp) with densities
+// perturbed by 1 %, the force sweep restricted to the first `count` particles.
 struct Derivatives {
   StateLayout layout;
   std::vector<double> ydot;
 };
 Derivatives derivatives(const Scene& scene, std::size_t count) {
   Model model = build_model(scene);
-  ParticleSet ps = model.particles;
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing), vel(-1, 1);
-  for (std::size_t a = 0; a < ps.n; ++a) {
-    ps.init_pos[0][a] += jitter(rng);
-    ps.init_pos[1][a] += jitter(rng);
-    ps.init_vel[0][a] = vel(rng);
-    ps.init_vel[1][a] = vel(rng);
-  }
+  std::uniform_real_distribution<double> vel(-1, 1);
+  const ParticleSet ps = testing::jittered(scene, model.particles, rng);
   RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
   rhs.set_derivative_count(count);
   std::vector<double> y(rhs.layout().size()), ydot(y.size());

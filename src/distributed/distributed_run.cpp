@@ -133,8 +133,8 @@ void check_distributable(const Scene& scene, int ranks) {
 #endif
     if (scene.projection != "cummins_rudman")
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
-    if (scene.density_correction != "none")
-      throw InputError(scene.source + ": method.density_correction = " + scene.density_correction + on);
+    if (scene.density_correction != "none" && scene.correction_solver != "newton")
+      throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != "approximate")
       throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
   }
@@ -352,7 +352,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     if (options.write_frames) {
       std::vector<double> pressure;  // isph: the last projection's, as one process's frame carries it
 #ifdef ARKSPH_WITH_HYPRE
-      if (projection && projection->stats().solves > 0) pressure = projection->pressure_at(mine.ids());
+      if (projection && projection->stats().solves > 0) pressure = projection->pressure_at(mine.ids(), model.particles.n);
 #endif
       const RankFrame rows(at, f, mine, grid.domain(), pressure.empty() ? nullptr : pressure.data(),
                            reduction.number_density());
@@ -561,6 +561,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     out->set_stepping_seconds(stepping);
 #ifdef ARKSPH_WITH_HYPRE
     if (projection) out->set_projection_report(projection->stats(), HaloProjection::solver_name());
+    if (projection && projection->correction()) out->set_correction_report(projection->correction()->stats());
 #endif
     try {
       out->finish(result, st, wall, diagnostic_evals, reflected, f.exchanges());

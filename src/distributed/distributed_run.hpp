@@ -37,8 +37,8 @@ namespace arksph::distributed {
 
 // InputError (one line, naming the key) for what a run over several ranks does not do yet:
 // isph-gpps, time.imex, dimension other than 2; under isph anything but the projection after each
-// step (and stage) with hypre (halo_projection.hpp): the constrained projection, a density
-// correction, the exact operator.
+// step (and stage) with hypre and the Newton density correction (halo_projection.hpp): the
+// constrained projection, the density correction's other solvers, the exact operator.
 void check_distributable(const Scene& scene, int ranks);
 
 // Collective over `comm` (size > 1). The RunResult is the same on every rank.

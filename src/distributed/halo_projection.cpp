@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
-#include <unordered_map>
 
 #include "core/errors.hpp"
+#include "distributed/gather_state.hpp"
 #include "distributed/rank_verdict.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "projection/velocity_correction.hpp"
@@ -30,22 +30,14 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       centre_positions_(scene.centre_positions),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
-      pressure_offset_(scene.ppe_pressure_offset) {}
+      pressure_offset_(scene.ppe_pressure_offset) {
+  if (scene.density_correction != "none") correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned);
+}
 
-std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>& ids) const {
-  struct IdValue {
-    std::int64_t id;
-    double p;
-  };
-  std::vector<IdValue> mine(pressure_.size());
-  for (std::size_t a = 0; a < pressure_.size(); ++a) mine[a] = {pressure_ids_[a], pressure_[a]};
-  const std::vector<IdValue> all = comm_.allgatherv(mine);
-  std::unordered_map<std::int64_t, double> p;
-  p.reserve(all.size());
-  for (const IdValue& r : all) p[r.id] = r.p;
-  std::vector<double> out(ids.size(), 0.0);
-  for (std::size_t a = 0; a < ids.size(); ++a)
-    if (const auto it = p.find(ids[a]); it != p.end()) out[a] = it->second;
+std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>& ids, std::size_t n) const {
+  const std::vector<double> by_id = spread_by_id(comm_, pressure_ids_, pressure_, n);
+  std::vector<double> out(ids.size());
+  for (std::size_t a = 0; a < ids.size(); ++a) out[a] = by_id[static_cast<std::size_t>(ids[a])];
   return out;
 }
 
@@ -85,6 +77,9 @@ void HaloProjection::project(double t, double* y) {
     }
   }
   stats_.seconds += since(t0);
+
+  // 5. Density correction, Szewc eqs. 57-59 (timed separately).
+  if (correction_) correction_->apply(t, y);
 }
 
 void HaloProjection::project_stage(double t, double* y) {

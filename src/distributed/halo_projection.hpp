@@ -22,15 +22,18 @@
 // the inconsistency (docs/parallel.md); one process's particle 0 changes with its re-sorts.
 //
 // With method.projection_points = "stages" steps 1-3 also run on every stage (project_stage).
+//   5. the Pozorski-Wawrenczuk density correction, when the scene has it (halo_density_correction.hpp).
 // What this does not do (refused on several ranks by check_distributable): the constrained
-// projection, isph-gpps, the Pozorski-Wawrenczuk density correction, and the exact operator
-// (C&R eq. 18).
+// projection, isph-gpps, the density correction's fixed point and KINSOL solvers, and the exact
+// operator (C&R eq. 18).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/scene.hpp"
+#include "distributed/halo_density_correction.hpp"
 #include "distributed/halo_rhs.hpp"
 #include "distributed/rank_particles.hpp"
 #include "distributed_ppe/hypre_poisson.hpp"
@@ -63,9 +66,12 @@ class HaloProjection {
   const std::vector<double>& pressure() const { return pressure_; }
   const std::vector<std::int64_t>& pressure_ids() const { return pressure_ids_; }
   // Collective. The last projection's pressure of the particles `ids` (this rank's now, which may
-  // have migrated since that projection): one all-gather of every rank's (id, P) (output.pieces).
-  std::vector<double> pressure_at(const std::vector<std::int64_t>& ids) const;
+  // have migrated since that projection), of a model of n particles: every rank's (id, P) gathered
+  // into one array by id (spread_by_id).
+  std::vector<double> pressure_at(const std::vector<std::int64_t>& ids, std::size_t n) const;
   static std::string solver_name() { return "hypre-pcg-boomeramg"; }
+  // The density correction after each step (null without one).
+  const HaloDensityCorrection* correction() const { return correction_.get(); }
 
  private:
   const parallel::Communicator& comm_;
@@ -92,6 +98,7 @@ class HaloProjection {
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   ProjectionStats stats_;
+  std::unique_ptr<HaloDensityCorrection> correction_;
 };
 
 }  // namespace arksph::distributed

@@ -20,8 +20,20 @@ double dot(const Vec& a, const Vec& b) {
 
 }  // namespace
 
-double density_fluctuation(const FluidFields& f, Vec& s) {
-  const std::size_t n = f.n_real;
+CorrectionSpan local_span(const FluidFields& f) {
+  CorrectionSpan span;
+  span.own = f.n_real;
+  span.sum = [](double v) { return v; };
+  span.extend = [](Vec&) {};
+  span.gather = [](const Vec& v) { return v; };
+  span.any = [](bool v) { return v; };
+  return span;
+}
+
+double density_fluctuation(const FluidFields& f, Vec& s) { return density_fluctuation(f, local_span(f), s); }
+
+double density_fluctuation(const FluidFields& f, const CorrectionSpan& span, Vec& s) {
+  const std::size_t n = span.own;
   const double w0 = f.kernel->W(0.0);
   s.resize(n);
 #pragma omp parallel for schedule(static)
@@ -30,9 +42,10 @@ double density_fluctuation(const FluidFields& f, Vec& s) {
     f.pairs.for_pairs(a, [&](std::uint32_t, double, double, double, double w, double) { d += w; });
     s[a] = 1.0 - f.m[a] * d / f.rho0[a];
   }
-  const double mean = std::accumulate(s.begin(), s.end(), 0.0) / static_cast<double>(n);
+  const double total = span.sum(static_cast<double>(n));
+  const double mean = span.sum(std::accumulate(s.begin(), s.end(), 0.0)) / total;
   for (double& v : s) v -= mean;
-  return std::sqrt(dot(s, s) / static_cast<double>(n));
+  return std::sqrt(span.sum(dot(s, s)) / total);
 }
 
 namespace {
@@ -42,8 +55,9 @@ namespace {
 // indefinite (particles pressed into a corner) it can fall for a few iterations and then grow past
 // |b| (measured on the spin-down: 0.41 |b| after 2 iterations, 1.3 |b| after 20), so that the last
 // iterate would be worse than no shift at all.
-template <class Apply>
-int bicgstab(Apply&& K_plain, const Vec& inv_diag, const Vec& b, Vec& x, int max_it, double rel_tol) {
+// `dot`: the inner product of two vectors of the span's own particles, over every rank.
+template <class Apply, class Dot>
+int bicgstab(Apply&& K_plain, const Vec& inv_diag, const Vec& b, Vec& x, int max_it, double rel_tol, Dot&& dot) {
   const std::size_t n = b.size();
   Vec scaled(n);
   auto K = [&](const Vec& q, Vec& out) {
@@ -161,17 +175,19 @@ namespace {
 // 1/d for the Jacobi preconditioner, with every entry held to the bulk's sign and to at least a tenth
 // of the median magnitude: at a corner, where the images of all sides meet, an entry can be near
 // zero or of the other sign, and its inverse would blow that particle's shift up.
-Vec safe_inverse(Vec d) {
+Vec safe_inverse(Vec d, const CorrectionSpan& span) {
   Vec mag(d.size());
   std::size_t positive = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     mag[i] = std::abs(d[i]);
     positive += d[i] > 0 ? 1 : 0;
   }
-  if (d.empty()) return d;
+  const double total = span.sum(static_cast<double>(d.size()));
+  if (total == 0) return d;
+  mag = span.gather(mag);
   std::nth_element(mag.begin(), mag.begin() + static_cast<long>(mag.size() / 2), mag.end());
   const double floor = 0.1 * mag[mag.size() / 2];
-  const double sign = 2 * positive >= d.size() ? 1.0 : -1.0;
+  const double sign = 2 * span.sum(static_cast<double>(positive)) >= total ? 1.0 : -1.0;
   for (double& v : d) v = floor > 0 ? sign / std::max(sign * v, floor) : 1.0;
   return d;
 }
@@ -179,42 +195,71 @@ Vec safe_inverse(Vec d) {
 
 int newton_shift(const FluidFields& f, const std::vector<double>& s, std::vector<double>& p, std::vector<double>& dx,
                  std::vector<double>& dy) {
+  return newton_shift(f, local_span(f), s, p, dx, dy);
+}
+
+int newton_shift(const FluidFields& f, const CorrectionSpan& span, const std::vector<double>& s, std::vector<double>& p,
+                 std::vector<double>& dx, std::vector<double>& dy) {
   // Krylov iterations per Newton step: enough for the smooth part of the error, too few to chase
   // the near-null odd-even modes (measured on cases/perturbed_lattice and the cavity).
   constexpr int kKrylovIterations = 20;
-  const std::size_t n = f.n_real;
+  const std::size_t n = span.own;
+  const double total = span.sum(static_cast<double>(n));
+  Vec q_all;
+  // dr = correction_shift(q) of the own particles, then at every real point.
+  auto shift = [&](const Vec& q) {
+    q_all.assign(q.begin(), q.end());
+    span.extend(q_all);
+    correction_shift(f, q_all, dx, dy);
+    dx.resize(n), dy.resize(n);
+  };
   auto K = [&](const Vec& q, Vec& out) {  // out = K q - mean: the change of s - mean s
-    correction_shift(f, q, dx, dy);
+    shift(q);
+    span.extend(dx), span.extend(dy);
     density_change(f, dx, dy, out);
-    const double mean = std::accumulate(out.begin(), out.end(), 0.0) / static_cast<double>(n);
+    out.resize(n);
+    const double mean = span.sum(std::accumulate(out.begin(), out.end(), 0.0)) / total;
     for (double& v : out) v -= mean;
   };
   Vec minus_s(n);
   for (std::size_t a = 0; a < n; ++a) minus_s[a] = -s[a];
-  const Vec inv_diag = safe_inverse(diagonal(f));
-  const int iterations = bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3);
-  correction_shift(f, p, dx, dy);
+  Vec diag = diagonal(f);
+  diag.resize(n);
+  const Vec inv_diag = safe_inverse(std::move(diag), span);
+  const auto global_dot = [&](const Vec& a, const Vec& b) { return span.sum(dot(a, b)); };
+  const int iterations = bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3, global_dot);
+  shift(p);
   return iterations;
 }
 
 NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, double* y, int max_iterations,
                                               double threshold, double spacing) {
+  return correct_density_newton([&](const double* state) { rhs.eval(t, state, nullptr); },
+                                [&]() -> const FluidFields& { return rhs.fields(); },
+                                [&] { return local_span(rhs.fields()); }, rhs.layout(), y, max_iterations, threshold,
+                                spacing);
+}
+
+NewtonCorrectionResult correct_density_newton(const std::function<void(const double*)>& refresh,
+                                              const std::function<const FluidFields&()>& fields,
+                                              const std::function<CorrectionSpan()>& span, const StateLayout& L,
+                                              double* y, int max_iterations, double threshold, double spacing) {
   // Largest shift of a particle per step as a fraction of the spacing: the linearisation of eq. 59
   // holds for shifts small against the kernel radius.
   constexpr double kMaxShift = 0.1;
   // Halvings of a step that does not lower the error before the step is given up.
   constexpr int kStepHalvings = 2;
-  const StateLayout& L = rhs.layout();
   const std::size_t n = L.n;
   NewtonCorrectionResult res;
   Vec s, p, sx, sy;
-  rhs.eval(t, y, nullptr);
-  res.error = density_fluctuation(rhs.fields(), s);
+  refresh(y);
+  CorrectionSpan sp = span();
+  res.error = density_fluctuation(fields(), sp, s);
   for (int it = 0; it < max_iterations && res.error > threshold; ++it) {
-    res.krylov_iterations += newton_shift(rhs.fields(), s, p, sx, sy);
+    res.krylov_iterations += newton_shift(fields(), sp, s, p, sx, sy);
     bool finite = true;
     for (std::size_t a = 0; a < n; ++a) finite = finite && std::isfinite(sx[a]) && std::isfinite(sy[a]);
-    if (!finite) break;  // the solve failed: leave the positions as they are
+    if (sp.any(!finite)) break;  // the solve failed: leave the positions as they are
     // Each particle's shift is clipped on its own: scaling the whole field down for one outlier
     // (a particle in a corner) would stall the correction everywhere else.
     const double cap = kMaxShift * spacing;
@@ -238,8 +283,9 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
         y[L.pos(0) + a] = x_before[a] + step * sx[a];
         if (L.dim == 2) y[L.pos(1) + a] = y_before[a] + step * sy[a];
       }
-      rhs.eval(t, y, nullptr);
-      const double e = density_fluctuation(rhs.fields(), s_trial);
+      refresh(y);
+      sp = span();
+      const double e = density_fluctuation(fields(), sp, s_trial);
       if (e < error_before) {
         accepted = true;
         res.error = e;
@@ -249,7 +295,7 @@ NewtonCorrectionResult correct_density_newton(RhsEvaluator& rhs, double t, doubl
     if (!accepted) {  // no step along this direction helps: positions back, fields with them
       std::copy(x_before.begin(), x_before.end(), y + L.pos(0));
       if (L.dim == 2) std::copy(y_before.begin(), y_before.end(), y + L.pos(1));
-      rhs.eval(t, y, nullptr);
+      refresh(y);
       ++res.rejected;
       break;
     }

@@ -229,10 +229,12 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
     if (const ConstrainedPressure* c = model_.projection->constraint()) ppe_json.set("constraint_relaxation_rate", c->relaxation());
     j.set("ppe", ppe_json);
-    if (const DensityCorrection* c = model_.projection->correction()) {
+    const DensityCorrection* c = model_.projection->correction();
+    if (c || correction_stats_) {
+      const CorrectionStats& cs = correction_stats_ ? *correction_stats_ : c->stats();
       Json cj = Json::object();
-      cj.set("applications", c->stats().applications).set("iterations", c->stats().iterations);
-      cj.set("seconds", c->stats().seconds).set("first_history", Json(c->stats().first_history));
+      cj.set("applications", cs.applications).set("iterations", cs.iterations);
+      cj.set("seconds", cs.seconds).set("first_history", Json(cs.first_history));
       j.set("density_correction", cj);
     }
   }

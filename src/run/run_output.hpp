@@ -1,9 +1,11 @@
 // Everything a run writes: VTP frames + PVD, timeseries.csv (flow and case metrics), summary.json.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "run/setup.hpp"
 #include "run/simulation.hpp"
 #include "diagnostics/flow_metrics.hpp"
@@ -57,6 +59,8 @@ class RunOutput {
     ppe_stats_ = stats;
     ppe_solver_ = solver;
   }
+  // summary.json density_correction from these counters instead of the model's (a decomposed run).
+  void set_correction_report(const CorrectionStats& stats) { correction_stats_ = stats; }
   void set_reorders(long count, double seconds) {
     reorders_ = count;
     reorder_seconds_ = seconds;
@@ -89,6 +93,7 @@ class RunOutput {
   double reorder_seconds_ = 0;
   std::string ppe_solver_;  // empty: the model's projection reports itself
   ProjectionStats ppe_stats_;
+  std::optional<CorrectionStats> correction_stats_;  // set_correction_report
   const double* projected_pressure() const;
 };
 

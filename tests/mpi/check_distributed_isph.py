@@ -23,8 +23,12 @@ against the one-process run, whose KLU solves each PPE exactly (to round-off):
   - a run that blows up inside the projection on one rank's particles (a body force of 1e30 in one
     corner, fixed steps: the step's end positions overflow the neighbour grid of the projection's
     field refresh) ends every rank with exit 3 and the one-process run's message, within the timeout;
+  - the spin-down with the Pozorski-Wawrenczuk correction (the Newton solver, threshold 1e-5 so
+    that it runs at every step) on 2 and 3 ranks: as above, and the last frame's positions within
+    POISSON of the spacing, summary.json density_correction with the applications and Newton
+    iterations of one process;
   - what the ranks do not run exits 2 on every rank with one message naming the key: isph-gpps,
-    the constrained projection, the Pozorski-Wawrenczuk density correction, the exact operator.
+    the constrained projection, the density correction's fixed point, the exact operator.
 
 usage: check_distributed_isph.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC FLAGS ...]
 """
@@ -72,6 +76,11 @@ def pressures(out):
     return {i: a["pressure"][k] for k, i in enumerate(a["id"])}
 
 
+def positions(out):
+    a = read_arrays(sorted(glob.glob(os.path.join(out, "particles_*.vtp")))[-1])
+    return {i: (a["Points"][3 * k], a["Points"][3 * k + 1]) for k, i in enumerate(a["id"])}
+
+
 def summary(out):
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)
@@ -82,8 +91,9 @@ def difference(u1, up, scale=None):
     return max(abs(up[i][k] - u1[i][k]) for i in u1 for k in (0, 1)) / scale
 
 
-def compare(case, args, ranks_args=(), bound=POISSON, within=True, ranks_list=(2, 3), speed=None):
-    """speed: the velocity scale of the comparison (default: the largest speed of one process)."""
+def compare(case, args, ranks_args=(), bound=POISSON, within=True, ranks_list=(2, 3), speed=None, spacing=None):
+    """speed: the velocity scale of the comparison (default: the largest speed of one process);
+    spacing: compare the positions too, on this scale."""
     one, code, _ = run(case + "-1", 1, args + ["--set", "method.ppe_solver=klu"])
     check(code == 0, case + ": one process exits 0")
     if code != 0:
@@ -106,11 +116,21 @@ def compare(case, args, ranks_args=(), bound=POISSON, within=True, ranks_list=(2
               % (case, ranks, ppe.get("solver"), ppe.get("solves"), ppe.get("iterations"), s1["ppe"]["solves"]))
         if "reorder_every=5" in " ".join(args):
             check(s["mpi"]["migrations"] > 0, "%s: %d ranks migrated %d times" % (case, ranks, s["mpi"]["migrations"]))
+        if "density_correction" in s1:
+            c1, c = s1["density_correction"], s.get("density_correction", {})
+            check(c1["applications"] > 0 and c.get("applications") == c1["applications"]
+                  and c.get("iterations") == c1["iterations"],
+                  "%s: %d ranks: density correction applied %s times, %s Newton steps (one process: %d, %d)"
+                  % (case, ranks, c.get("applications"), c.get("iterations"), c1["applications"], c1["iterations"]))
         up = velocities(out)
         check(sorted(up) == sorted(u1), "%s: %d ranks write every particle once" % (case, ranks))
         if sorted(up) != sorted(u1):
             continue
         worst = difference(u1, up, speed)
+        if spacing:
+            dr = difference(positions(one), positions(out), spacing)
+            check(dr <= bound, "%s: %d ranks vs one process: position max |dr| / dx = %.3g <= %.0e"
+                  % (case, ranks, dr, bound))
         if speed:
             p1, pp = pressures(one), pressures(out)
             dp = max(abs(pp[i] - p1[i]) for i in p1) / max(abs(p) for p in p1.values())
@@ -134,6 +154,8 @@ compare("spin_down", spin)
 compare("spin_down_migrating", spin + ["--set", "method.reorder_every=5"])
 compare("spin_down_stages", spin + ["--set", "method.projection_points=stages"])
 compare("vortex", vortex)
+compare("spin_down_pw", spin + ["--set", "method.density_correction=pozorski_wawrenczuk",
+                                "--set", "method.correction_threshold=1e-5"], spacing=0.02)
 compare("tank", [os.path.join(source, "cases/hydrostatic_tank/scene.toml"), "--set", "time.end=0.02",
                 "--set", "output.every=0.02"] + tol, speed=0.02)  # g t = 1 x 0.02
 compare("spin_down_loose", spin, ranks_args=["--set", "method.ppe_tolerance=1e-5"], within=False, ranks_list=(2,))
@@ -187,8 +209,9 @@ for ranks in (1, 2, 3):
 
 refused = [("scheme isph-gpps", ["--set", "method.scheme=isph-gpps"], "isph-gpps"),
            ("method.projection = constrained", ["--set", "method.projection=constrained"], "method.projection"),
-           ("method.density_correction", ["--set", "method.density_correction=pozorski_wawrenczuk"],
-            "method.density_correction"),
+           ("method.correction_solver = fixed_point", ["--set", "method.density_correction=pozorski_wawrenczuk",
+                                                       "--set", "method.correction_solver=fixed_point"],
+            "method.correction_solver"),
            ("method.ppe_operator = exact", ["--set", "method.ppe_operator=exact", "--set", "method.ppe_solver=klu"],
             "method.ppe_operator")]
 for what, extra, key in refused:

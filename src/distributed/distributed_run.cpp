@@ -133,7 +133,7 @@ void check_distributable(const Scene& scene, int ranks) {
 #endif
     if (scene.projection != "cummins_rudman")
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
-    if (scene.density_correction != "none" && scene.correction_solver != "newton")
+    if (scene.density_correction != "none" && scene.correction_solver == "kinsol")
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != "approximate")
       throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);

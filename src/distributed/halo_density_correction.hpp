@@ -8,12 +8,18 @@
 // a pair loop reads them, the Jacobi preconditioner's median over every rank's diagonal. Every
 // rank takes the same Newton and Krylov iterations and the same accept/halve decisions.
 //
-// Only method.correction_solver = "newton" (the default) runs on ranks; the fixed point and KINSOL
-// are refused by check_distributable.
+// method.correction_solver = "fixed_point" (Szewc's scheme, eq. 58 solved as a Poisson equation,
+// repeated up to method.correction_max_iterations times) assembles the equation's rows with global
+// numbers and solves them with hypre, as the projection does (distributed_ppe): the approximate
+// Laplacian of C&R eq. 19 with the source 1 - rho~/rho0, the equation of the projection's pinned
+// particle replaced by p* = 0, the last solution the next warm start (dropped when particles
+// migrate). KINSOL is refused on ranks by check_distributable.
 #pragma once
 #include <vector>
 
 #include "core/scene.hpp"
+#include "distributed_ppe/hypre_poisson.hpp"
+#include "distributed_ppe/ppe_rows.hpp"
 #include "distributed/halo_rhs.hpp"
 #include "distributed/rank_particles.hpp"
 #include "parallel/communicator.hpp"
@@ -24,21 +30,32 @@ namespace arksph::distributed {
 
 class HaloDensityCorrection {
  public:
+  // pinned_id: the global id of the particle whose p* is pinned to 0 (the fixed point's Poisson problem).
   HaloDensityCorrection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                        const RankParticles& owned);
+                        const RankParticles& owned, std::int64_t pinned_id);
   // Collective. Corrects the positions of the rank's state y (time t) in place.
   void apply(double t, double* y);
+  // The rank's particles changed (migration, a new deal): no warm start, a new hierarchy.
+  void particles_moved();
   // applications, iterations and first_history are global (the same on every rank), seconds this rank's.
   const CorrectionStats& stats() const { return stats_; }
 
  private:
   CorrectionSpan span() const;
+  // One fixed-point iteration (eq. 58 solved, eq. 57 applied) from the fields of y; s: the density
+  // fluctuation of the rank's particles.
+  void fixed_point_step(const std::vector<double>& s, double* y);
   const parallel::Communicator& comm_;
   HaloRhs& f_;
   const RankParticles& owned_;
   double threshold_;
   int max_iterations_;
   double spacing_;
+  bool newton_;
+  std::int64_t pinned_id_;
+  distributed_ppe::HyprePoisson solver_;
+  distributed_ppe::LocalRows rows_;
+  std::vector<double> pstar_;  // the fixed point's last solution, the rank's particles
   CorrectionStats stats_;
 };
 

@@ -31,7 +31,7 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {
-  if (scene.density_correction != "none") correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned);
+  if (scene.density_correction != "none") correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned, pinned_id);
 }
 
 std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>& ids, std::size_t n) const {
@@ -46,6 +46,7 @@ void HaloProjection::particles_moved() {
   solver_.invalidate();  // the hierarchy was set up on the old numbering
   solution_.clear();
   y_prev_.clear();
+  if (correction_) correction_->particles_moved();
 }
 
 void HaloProjection::begin_step(double t, const double* y) {

@@ -23,12 +23,13 @@ against the one-process run, whose KLU solves each PPE exactly (to round-off):
   - a run that blows up inside the projection on one rank's particles (a body force of 1e30 in one
     corner, fixed steps: the step's end positions overflow the neighbour grid of the projection's
     field refresh) ends every rank with exit 3 and the one-process run's message, within the timeout;
-  - the spin-down with the Pozorski-Wawrenczuk correction (the Newton solver, threshold 1e-5 so
-    that it runs at every step) on 2 and 3 ranks: as above, and the last frame's positions within
-    POISSON of the spacing, summary.json density_correction with the applications and Newton
+  - the spin-down with the Pozorski-Wawrenczuk correction (threshold 1e-5, so that it runs at every
+    step) on 2 and 3 ranks, with the Newton solver, and with Szewc's fixed point (two solves a step,
+    migrations every 5 steps: the warm start dropped): as above, and the last frame's positions
+    within POISSON of the spacing, summary.json density_correction with the applications and
     iterations of one process;
   - what the ranks do not run exits 2 on every rank with one message naming the key: isph-gpps,
-    the constrained projection, the density correction's fixed point, the exact operator.
+    the constrained projection, the density correction's KINSOL solver, the exact operator.
 
 usage: check_distributed_isph.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC FLAGS ...]
 """
@@ -120,7 +121,7 @@ def compare(case, args, ranks_args=(), bound=POISSON, within=True, ranks_list=(2
             c1, c = s1["density_correction"], s.get("density_correction", {})
             check(c1["applications"] > 0 and c.get("applications") == c1["applications"]
                   and c.get("iterations") == c1["iterations"],
-                  "%s: %d ranks: density correction applied %s times, %s Newton steps (one process: %d, %d)"
+                  "%s: %d ranks: density correction applied %s times, %s iterations (one process: %d, %d)"
                   % (case, ranks, c.get("applications"), c.get("iterations"), c1["applications"], c1["iterations"]))
         up = velocities(out)
         check(sorted(up) == sorted(u1), "%s: %d ranks write every particle once" % (case, ranks))
@@ -154,8 +155,11 @@ compare("spin_down", spin)
 compare("spin_down_migrating", spin + ["--set", "method.reorder_every=5"])
 compare("spin_down_stages", spin + ["--set", "method.projection_points=stages"])
 compare("vortex", vortex)
-compare("spin_down_pw", spin + ["--set", "method.density_correction=pozorski_wawrenczuk",
-                                "--set", "method.correction_threshold=1e-5"], spacing=0.02)
+pw = ["--set", "method.density_correction=pozorski_wawrenczuk", "--set", "method.correction_threshold=1e-5"]
+compare("spin_down_pw", spin + pw, spacing=0.02)
+compare("spin_down_pw_fixed_point", spin + pw + ["--set", "method.correction_solver=fixed_point",
+                                                 "--set", "method.correction_max_iterations=2",
+                                                 "--set", "method.reorder_every=5"], spacing=0.02)
 compare("tank", [os.path.join(source, "cases/hydrostatic_tank/scene.toml"), "--set", "time.end=0.02",
                 "--set", "output.every=0.02"] + tol, speed=0.02)  # g t = 1 x 0.02
 compare("spin_down_loose", spin, ranks_args=["--set", "method.ppe_tolerance=1e-5"], within=False, ranks_list=(2,))
@@ -209,8 +213,8 @@ for ranks in (1, 2, 3):
 
 refused = [("scheme isph-gpps", ["--set", "method.scheme=isph-gpps"], "isph-gpps"),
            ("method.projection = constrained", ["--set", "method.projection=constrained"], "method.projection"),
-           ("method.correction_solver = fixed_point", ["--set", "method.density_correction=pozorski_wawrenczuk",
-                                                       "--set", "method.correction_solver=fixed_point"],
+           ("method.correction_solver = kinsol", ["--set", "method.density_correction=pozorski_wawrenczuk",
+                                                  "--set", "method.correction_solver=kinsol"],
             "method.correction_solver"),
            ("method.ppe_operator = exact", ["--set", "method.ppe_operator=exact", "--set", "method.ppe_solver=klu"],
             "method.ppe_operator")]

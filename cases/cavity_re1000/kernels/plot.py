@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """Szewc's kernel and smoothing-length studies of the Re = 1000 cavity at N = 3600 (Figs. 5-8, 12a-b).
 
-usage: plot.py STEADY_RUNS KERNEL_RUNS SMOOTHING_RUNS [OUT_DIR]
+usage: plot.py WENDLAND_RUNS KERNEL_RUNS SMOOTHING_RUNS [OUT_DIR]
 
-    /usr/bin/python3 cases/cavity_re1000/kernels/plot.py runs/cavity_re1000_steady \\
+    /usr/bin/python3 cases/cavity_re1000/kernels/plot.py runs/cavity_re1000_wendland_t120 \\
         runs/cavity_re1000_kernels runs/cavity_re1000_smoothing_length
 
-STEADY_RUNS supplies the Wendland, h = 2 dx runs (N = 3600 of ../steady/sweep.toml); the other two
-folders are those of kernels.toml and smoothing_length.toml. A run still going is read from its
-timeseries.csv so far. Writes to OUT_DIR (default measured/ beside this script):
+WENDLAND_RUNS supplies the Wendland, h = 2 dx runs at N = 3600 (those of wendland.toml; the N = 3600
+runs of ../steady/sweep.toml without the P-W correction serve too, ended at their steady state); the
+other two folders are those of kernels.toml and smoothing_length.toml. A run still going is read
+from its timeseries.csv so far. Writes to OUT_DIR (default measured/ beside this script):
 - results.csv: study, scheme, kernel, h/dx, status, end time, Ghia u and v r.m.s. and largest
   errors at the last output, density mean and r.m.s. at t = 0 and at the last output (Szewc
   eq. 56), the share of particles whose nearest neighbour is closer than 0.5 dx, steps, wall s;
@@ -83,9 +84,10 @@ def measure(run, study):
     return row, ts
 
 
-def profiles(ax_col, runs, label_of):
+def profiles(ax_col, runs, label_of, colours):
+    """colours: label -> colour, the same in every panel."""
     ghia_drawn = [False, False]
-    for run in runs:
+    for run in sorted(runs, key=label_of):
         for i, (line, coord) in enumerate((("u", "y"), ("v", "x"))):
             path = os.path.join(run["folder"], f"ghia_{line}.csv")
             if not os.path.exists(path):
@@ -95,13 +97,16 @@ def profiles(ax_col, runs, label_of):
             if not ghia_drawn[i]:
                 ax_col[i].plot(s, [float(r[f"{line}_ghia"]) for r in g], "ko", ms=3, label="Ghia")
                 ghia_drawn[i] = True
-            ax_col[i].plot(s, [float(r[f"{line}_sph"]) for r in g], "-", label=label_of(run))
+            ax_col[i].plot(s, [float(r[f"{line}_sph"]) for r in g], "-", color=colours[label_of(run)],
+                           label=label_of(run))
 
 
 def profile_figure(runs, label_of, title, path):
     fig, ax = plt.subplots(2, len(SCHEMES), figsize=(4 * len(SCHEMES), 7), squeeze=False)
+    labels = sorted({label_of(r) for r in runs})
+    colours = {label: f"C{k}" for k, label in enumerate(labels)}
     for j, scheme in enumerate(SCHEMES):
-        profiles([ax[0][j], ax[1][j]], [r for r in runs if r["scheme"] == scheme], label_of)
+        profiles([ax[0][j], ax[1][j]], [r for r in runs if r["scheme"] == scheme], label_of, colours)
         ax[0][j].set_title(scheme)
         ax[0][j].set_xlabel("y (u on x = 0.5)")
         ax[1][j].set_xlabel("x (v on y = 0.5)")

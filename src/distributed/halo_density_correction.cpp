@@ -46,7 +46,7 @@ void HaloDensityCorrection::fixed_point_step(const std::vector<double>& s, doubl
   const std::vector<double> halo_p = f_.halo_values(pstar_);
   p_all.insert(p_all.end(), halo_p.begin(), halo_p.end());
   std::vector<double> dx, dy;
-  correction_shift(f, p_all, dx, dy);
+  correction_shift(f, p_all, dx, dy, n);
   for (std::size_t a = 0; a < n; ++a) {
     y[L.pos(0) + a] += dx[a];
     if (L.dim == 2) y[L.pos(1) + a] += dy[a];

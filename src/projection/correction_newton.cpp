@@ -100,8 +100,8 @@ int bicgstab(Apply&& K_plain, const Vec& inv_diag, const Vec& b, Vec& x, int max
 }  // namespace
 
 void correction_shift(const FluidFields& f, const std::vector<double>& p, std::vector<double>& dx,
-                      std::vector<double>& dy) {
-  const std::size_t n = f.n_real;
+                      std::vector<double>& dy, std::size_t count) {
+  const std::size_t n = std::min(count, f.n_real);
   dx.resize(n), dy.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
@@ -117,8 +117,8 @@ void correction_shift(const FluidFields& f, const std::vector<double>& p, std::v
 }
 
 void density_change(const FluidFields& f, const std::vector<double>& dx, const std::vector<double>& dy,
-                    std::vector<double>& ds) {
-  const std::size_t n = f.n_real;
+                    std::vector<double>& ds, std::size_t count) {
+  const std::size_t n = std::min(count, f.n_real);
   ds.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
@@ -137,8 +137,9 @@ namespace {
 // with e_c = d(dr_c)/dp_a. For c = a, e_a = (1/rho0_a) sum_{b': src(b') != a} V_b' F_ab' r_ab'; for
 // c != a, e_c = -(1/rho0_c) sum over c's neighbours b' that are a or an image of a of V_b' F_cb' r_cb'.
 // Wall particles, whose own mirror image enters, have a diagonal several times the bulk's.
-Vec diagonal(const FluidFields& f) {
-  const std::size_t n = f.n_real;
+// Rows of the first `count` real particles.
+Vec diagonal(const FluidFields& f, std::size_t count) {
+  const std::size_t n = std::min(count, f.n_real);
   Vec diag(n);
 #pragma omp parallel for schedule(dynamic, 64)
   for (std::size_t a = 0; a < n; ++a) {
@@ -210,22 +211,18 @@ int newton_shift(const FluidFields& f, const CorrectionSpan& span, const std::ve
   auto shift = [&](const Vec& q) {
     q_all.assign(q.begin(), q.end());
     span.extend(q_all);
-    correction_shift(f, q_all, dx, dy);
-    dx.resize(n), dy.resize(n);
+    correction_shift(f, q_all, dx, dy, n);
   };
   auto K = [&](const Vec& q, Vec& out) {  // out = K q - mean: the change of s - mean s
     shift(q);
     span.extend(dx), span.extend(dy);
-    density_change(f, dx, dy, out);
-    out.resize(n);
+    density_change(f, dx, dy, out, n);
     const double mean = span.sum(std::accumulate(out.begin(), out.end(), 0.0)) / total;
     for (double& v : out) v -= mean;
   };
   Vec minus_s(n);
   for (std::size_t a = 0; a < n; ++a) minus_s[a] = -s[a];
-  Vec diag = diagonal(f);
-  diag.resize(n);
-  const Vec inv_diag = safe_inverse(std::move(diag), span);
+  const Vec inv_diag = safe_inverse(diagonal(f, n), span);
   const auto global_dot = [&](const Vec& a, const Vec& b) { return span.sum(dot(a, b)); };
   const int iterations = bicgstab(K, inv_diag, minus_s, p, kKrylovIterations, 1e-3, global_dot);
   shift(p);

@@ -39,14 +39,16 @@ struct CorrectionSpan {
 CorrectionSpan local_span(const FluidFields& f);
 
 // The shift of eq. 57 for a potential p: dr_a = -(G p)_a / rho0_a, G the difference-form gradient
-// sum_b V_b (p_src(b) - p_a) grad_a W_ab (ghosts carry their source's p).
+// sum_b V_b (p_src(b) - p_a) grad_a W_ab (ghosts carry their source's p), for the first `count`
+// real particles (all by default: a rank's own particles come first, its halo copies after).
 void correction_shift(const FluidFields& f, const std::vector<double>& p, std::vector<double>& dx,
-                      std::vector<double>& dy);
+                      std::vector<double>& dy, std::size_t count = static_cast<std::size_t>(-1));
 // The first-order change of s_a = 1 - (m_a/rho0_a) sum_b W_ab when every real particle c moves by
 // dr_c and each ghost b with it through its mirror map M_b: -(m_a/rho0_a) sum_b F_ab r_ab . (dr_a -
-// M_b dr_src(b)). K p is density_change(correction_shift(p)); applied matrix-free.
+// M_b dr_src(b)). K p is density_change(correction_shift(p)); applied matrix-free. For the first
+// `count` real particles, as correction_shift.
 void density_change(const FluidFields& f, const std::vector<double>& dx, const std::vector<double>& dy,
-                    std::vector<double>& ds);
+                    std::vector<double>& ds, std::size_t count = static_cast<std::size_t>(-1));
 
 // s_a - mean s, s_a = 1 - (m_a/rho0_a) sum_b W_ab (own term included), for the current fields;
 // returns its r.m.s. (Szewc eq. 56).

@@ -25,6 +25,7 @@ usage: check_distributed_restart.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC 
 import glob
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -240,12 +241,20 @@ def interrupted(name):
     check(p.returncode == 143 and any("interrupted by SIGTERM" in l and "checkpoint written" in l for l in lines)
           and os.path.exists(os.path.join(out, "checkpoint.h5")),
           "SIGTERM to one of 2 ranks: exit %s, %s, checkpoint.h5 written" % (p.returncode, lines))
-    return out if p.returncode == 143 else None
+    if p.returncode != 143:
+        return None, None
+    # The time the run stopped at: the signal can arrive some frames after the second (a fast
+    # machine), so the continuation's end time is taken after it.
+    stopped_at = [float(m.group(1)) for l in lines for m in [re.search(r"at t = ([-+0-9.eE]+)", l)] if m]
+    return out, (stopped_at[0] if stopped_at else None)
 
 
-stopped = interrupted("interrupted-2")
-if stopped:
-    code, _ = run(3, ["--restart", os.path.join(stopped, "checkpoint.h5"), "--set", "time.end=0.1"], stopped)
-    check(code == 0, "the interrupted 2-rank run continues on 3 ranks: exit %s" % code)
+stopped, stopped_at = interrupted("interrupted-2")
+check(stopped is None or stopped_at is not None, "SIGTERM to one of 2 ranks: the message names the time it stopped at")
+if stopped and stopped_at is not None:
+    code, _ = run(3, ["--restart", os.path.join(stopped, "checkpoint.h5"), "--set", "time.end=%.17g" % (stopped_at + 0.05)],
+                  stopped)
+    check(code == 0, "the interrupted 2-rank run (stopped at t = %g) continues on 3 ranks to t = %g: exit %s"
+          % (stopped_at, stopped_at + 0.05, code))
 
 finish("check_distributed_restart")

@@ -124,8 +124,9 @@ void check_distributable(const Scene& scene, int ranks) {
   const std::string on =
       " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
   const SchemeTraits& traits = scheme_traits(scene.scheme);
-  // Projection schemes: isph with the projection after each step (halo_projection.hpp), with hypre.
-  if (traits.grid || (!traits.weakly_compressible && !traits.projection))
+  // Projection schemes: isph and isph-gpps with the projection after each step (halo_projection.hpp),
+  // with hypre.
+  if (!traits.weakly_compressible && !traits.projection)
     throw InputError(scene.source + ": scheme " + scene.scheme + on);
   if (traits.projection) {
 #ifndef ARKSPH_WITH_HYPRE
@@ -245,7 +246,10 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     projection = std::make_unique<HaloProjection>(scene, comm, f, mine, model.particles.id[0]);
     for (std::string& term : model.terms)
       if (term == "projection:ppe-" + scene.ppe_solver) term = "projection:ppe-hypre";
-    if (root) {
+    if (root && scheme_traits(scene.scheme).grid) {
+      std::printf("  pressure Poisson equation: on the grid (KLU), the cell sums of every rank's particles all-reduced\n");
+      std::fflush(stdout);
+    } else if (root) {
       std::printf("  pressure Poisson equation: hypre PCG + BoomerAMG over the ranks, tolerance %g "
                   "(method.ppe_solver = %s applies to one process)\n", scene.ppe_tolerance, scene.ppe_solver.c_str());
       std::fflush(stdout);
@@ -560,7 +564,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
     out->set_stepping_seconds(stepping);
 #ifdef ARKSPH_WITH_HYPRE
-    if (projection) out->set_projection_report(projection->stats(), HaloProjection::solver_name());
+    if (projection) out->set_projection_report(projection->stats(), projection->solver_name());
     if (projection && projection->correction()) out->set_correction_report(projection->correction()->stats());
 #endif
     try {

@@ -36,9 +36,10 @@
 namespace arksph::distributed {
 
 // InputError (one line, naming the key) for what a run over several ranks does not do yet:
-// isph-gpps, time.imex, dimension other than 2; under isph anything but the projection after each
-// step (and stage) with hypre and the Newton density correction (halo_projection.hpp): the
-// constrained projection, the density correction's other solvers, the exact operator.
+// time.imex, dimension other than 2; under isph and isph-gpps anything but the projection after
+// each step (and stage) with hypre or the grid and the Newton or fixed-point density correction
+// (halo_projection.hpp): the constrained projection, the correction's KINSOL solver, the exact
+// operator; and builds without hypre.
 void check_distributable(const Scene& scene, int ranks);
 
 // Collective over `comm` (size > 1). The RunResult is the same on every rank.

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/scheme.hpp"
 #include "distributed/gather_state.hpp"
 #include "distributed/rank_verdict.hpp"
 #include "projection/ppe_assembly.hpp"
@@ -31,6 +32,7 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {
+  if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
   if (scene.density_correction != "none") correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned, pinned_id);
 }
 
@@ -113,6 +115,55 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
   if (refreshed.code) throw NumericalFailure(refreshed.message);
   if (split_.active()) split_.restore_velocities(u, v);
   const FluidFields& f = f_.evaluator().fields();
+
+  // 2. Source of the owned particles (the halo's divergences are not used). On the grid the flux of
+  // g enters at the wall faces (GridProjection), on the particles in the source.
+  const auto ta = std::chrono::steady_clock::now();
+  std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
+  if (split_.active()) {
+    const std::vector<double> dg = split_.divergence(f);
+    const std::vector<double> flux = grid_ ? std::vector<double>(n, 0.0) : neumann_source(f);
+    for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
+  }
+  stats_.assembly_seconds += since(ta);
+  pressure_ids_ = owned_.ids();
+  if (grid_)
+    project_on_grid(f, div, dt, u, v);
+  else
+    project_on_particles(f, div, dt, u, v);
+}
+
+void HaloProjection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* u,
+                                     double* v) {
+  const std::size_t n = owned_.layout().n;
+  const auto ts = std::chrono::steady_clock::now();
+  const CellCombine combine = [this](std::vector<double>& sums, std::vector<double>& maxima) {
+    comm_.sum_in_place(sums);
+    comm_.max_in_place(maxima);
+  };
+  GridCorrection c = grid_->solve(f, n, div, dt, combine);
+  stats_.solve_seconds += since(ts);
+  ++stats_.solves;
+  stats_.iterations += 1;
+  stats_.symbolic_analyses += c.refactorised ? 1 : 0;
+  stats_.last_residual = c.residual;
+  stats_.max_residual = std::max(stats_.max_residual, c.residual);
+  pressure_ = std::move(c.pressure);
+  if (zero_min_level_) {  // the grid's p has zero mean over the cells; P >= 0 over every rank
+    double lowest = std::numeric_limits<double>::infinity();
+    for (double p : pressure_) lowest = std::min(lowest, p);
+    const double level = -comm_.max(-lowest);
+    for (double& p : pressure_) p -= level;
+  }
+  // Velocity correction, Szewc eq. 30, with (1/rho) grad p from the grid.
+  for (std::size_t a = 0; a < n; ++a) u[a] -= dt * c.ax[a];
+  if (v)
+    for (std::size_t a = 0; a < n; ++a) v[a] -= dt * c.ay[a];
+}
+
+void HaloProjection::project_on_particles(const FluidFields& f, std::vector<double>& div, double dt, double* u,
+                                          double* v) {
+  const std::size_t n = owned_.layout().n;
   const auto ta = std::chrono::steady_clock::now();
   if (!numbered_) {  // the rows of the rank's particles, after a deal or migration
     range_ = distributed_ppe::global_rows(comm_, n);
@@ -126,14 +177,6 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
   row_of_.resize(n + halo_rows.size());
   for (std::size_t a = 0; a < n; ++a) row_of_[a] = range_.first + static_cast<std::int64_t>(a);
   for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
-
-  // 2. Source and rows of the owned particles (the halo's divergences are not used).
-  std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
-  if (split_.active()) {
-    const std::vector<double> dg = split_.divergence(f);
-    const std::vector<double> flux = neumann_source(f);
-    for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
-  }
   distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, div, dt, rows_);
   stats_.assembly_seconds += since(ta);
   const auto ts = std::chrono::steady_clock::now();
@@ -160,7 +203,6 @@ void HaloProjection::project_velocities(double dt, double t, double* y) {
   }
   pressure_.resize(n);
   for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
-  pressure_ids_ = owned_.ids();
   // P at every real point of the evaluator: the rank's particles, then their copies' owners' P.
   std::vector<double> p_all(pressure_);
   const std::vector<double> halo_p = f_.halo_values(pressure_);

@@ -23,9 +23,13 @@
 //
 // With method.projection_points = "stages" steps 1-3 also run on every stage (project_stage).
 //   5. the Pozorski-Wawrenczuk density correction, when the scene has it (halo_density_correction.hpp).
+// isph-gpps (Szewc et al. 2012 §4.2) replaces steps 2-3 by the grid solve of GridProjection: each
+// rank deposits its own particles on the auxiliary grid, the cell sums are all-reduced, and every
+// rank solves the whole grid problem (KLU, the same on every rank) and interpolates (1/rho) grad p
+// and p at its own particles; the level (zero minimum) over all ranks. The grid is replicated: its
+// memory and the all-reduce of 8 numbers a cell per step do not shrink with the rank count.
 // What this does not do (refused on several ranks by check_distributable): the constrained
-// projection, isph-gpps, the density correction's fixed point and KINSOL solvers, and the exact
-// operator (C&R eq. 18).
+// projection, the density correction's KINSOL solver, and the exact operator (C&R eq. 18).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -40,6 +44,7 @@
 #include "distributed_ppe/ppe_rows.hpp"
 #include "parallel/communicator.hpp"
 #include "projection/body_force_split.hpp"
+#include "projection/ProjectionGrid_Szewc2012.hpp"
 #include "projection/projection.hpp"
 
 namespace arksph::distributed {
@@ -69,7 +74,8 @@ class HaloProjection {
   // have migrated since that projection), of a model of n particles: every rank's (id, P) gathered
   // into one array by id (spread_by_id).
   std::vector<double> pressure_at(const std::vector<std::int64_t>& ids, std::size_t n) const;
-  static std::string solver_name() { return "hypre-pcg-boomeramg"; }
+  // The pressure solve as summary.json names it: hypre's, or the grid's (isph-gpps).
+  std::string solver_name() const { return grid_ ? "grid-klu" : "hypre-pcg-boomeramg"; }
   // The density correction after each step (null without one).
   const HaloDensityCorrection* correction() const { return correction_.get(); }
 
@@ -80,6 +86,10 @@ class HaloProjection {
   std::int64_t pinned_id_;
   distributed_ppe::HyprePoisson solver_;
   void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
+  // Steps 2-3 on the particles (hypre) or on the grid (isph-gpps), from the owned particles' div(u*).
+  void project_on_particles(const FluidFields& f, std::vector<double>& div, double dt, double* u, double* v);
+  void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* u, double* v);
+  std::unique_ptr<GridProjection> grid_;  // isph-gpps only
 
   BodyForceSplit split_;  // the body force's wall flux as Neumann data (body_force_split.hpp)
   bool slip_origin_;      // the stages' wall images take the increment (t - t_n) g (not with stages projected)

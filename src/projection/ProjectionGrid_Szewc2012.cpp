@@ -3,6 +3,7 @@
 #include "core/param_builder.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "projection/grid_transfer.hpp"
@@ -73,17 +74,46 @@ void GridProjection::add_wall_flux(std::vector<double>& rhs, double t) const {
     }
 }
 
-GridCorrection GridProjection::solve(const FluidFields& f, const std::vector<double>& divergence, double dt) {
+namespace {
+// The two deposits' sums combined over the processes: one array of sums and one of maxima (the lows
+// negated), so that the combination is two reductions.
+void combine_deposits(const CellCombine& combine, DepositSums& a, DepositSums& b) {
+  const std::size_t nc = a.value.size();
+  std::vector<double> sums, maxima;
+  sums.reserve(4 * nc);
+  maxima.reserve(4 * nc);
+  for (DepositSums* d : {&a, &b}) {
+    sums.insert(sums.end(), d->value.begin(), d->value.end());
+    sums.insert(sums.end(), d->weight.begin(), d->weight.end());
+    for (double lo : d->lo) maxima.push_back(-lo);
+    maxima.insert(maxima.end(), d->hi.begin(), d->hi.end());
+  }
+  combine(sums, maxima);
+  std::size_t k = 0;
+  for (DepositSums* d : {&a, &b}) {
+    for (std::size_t i = 0; i < nc; ++i) d->value[i] = sums[k * nc + i];
+    for (std::size_t i = 0; i < nc; ++i) d->weight[i] = sums[(k + 1) * nc + i];
+    for (std::size_t i = 0; i < nc; ++i) d->lo[i] = -maxima[k * nc + i];
+    for (std::size_t i = 0; i < nc; ++i) d->hi[i] = maxima[(k + 1) * nc + i];
+    k += 2;
+  }
+}
+}  // namespace
+
+GridCorrection GridProjection::solve(const FluidFields& f, std::size_t n, const std::vector<double>& divergence,
+                                     double dt, const CellCombine& combine) {
   const GridSpec& g = poisson_.grid();
-  const std::size_t n = f.n_real;
   const double* y = f.dim == 2 ? f.y.data() : nullptr;
   std::vector<double> volume(n), source(n);
   for (std::size_t a = 0; a < n; ++a) {
     volume[a] = f.m[a] / f.rho[a];
     source[a] = divergence[a] / dt;
   }
-  const GridDeposit rho = deposit(g, n, f.x.data(), y, volume.data(), f.rho0.data(), fallback_density_);
-  const GridDeposit src = deposit(g, n, f.x.data(), y, volume.data(), source.data(), 0.0);
+  DepositSums rho_sums = deposit_sums(g, n, f.x.data(), y, volume.data(), f.rho0.data());
+  DepositSums src_sums = deposit_sums(g, n, f.x.data(), y, volume.data(), source.data());
+  if (combine) combine_deposits(combine, rho_sums, src_sums);
+  const GridDeposit rho = finish_deposit(std::move(rho_sums), fallback_density_);
+  const GridDeposit src = finish_deposit(std::move(src_sums), 0.0);
   std::vector<double> rhs = src.value;
   if (volume_relaxation_ > 0) {  // ask for div u = beta (phi - 1)/dt: over-full cells expand
     const double cell = std::pow(g.h, f.dim);

@@ -13,8 +13,12 @@
 // the grid pressure of a tank at rest is then rho g (H - y) + const and (1/rho) grad p = g exactly.
 // The density on the grid is the volume-weighted mean of the particles' phase densities, so for one
 // phase it is uniform and the matrix never changes.
+// On the ranks of a decomposed run each rank deposits its own particles; the cell sums of all ranks
+// are combined (CellCombine) before the division, so that every rank holds the deposit of the whole
+// flow, solves the same grid problem and interpolates it at its own particles.
 #pragma once
 #include "core/parameter.hpp"
+#include <functional>
 #include <vector>
 
 #include "core/scene.hpp"
@@ -37,11 +41,22 @@ struct GridCorrection {
   bool refactorised = false;
 };
 
+// Combines per-cell arrays over the processes that share a grid, in place: `sums` element by
+// element added, `maxima` element by element the largest. Every process must end with the same
+// arrays (an all-reduce).
+using CellCombine = std::function<void(std::vector<double>& sums, std::vector<double>& maxima)>;
+
 class GridProjection {
  public:
   explicit GridProjection(const Scene& scene);
   // The correction for the particles of f (at r*), from their velocity divergence div(u*).
-  GridCorrection solve(const FluidFields& f, const std::vector<double>& divergence, double dt);
+  GridCorrection solve(const FluidFields& f, const std::vector<double>& divergence, double dt) {
+    return solve(f, f.n_real, divergence, dt, {});
+  }
+  // The same for the first n particles of f, the grid deposit combined with the other processes'
+  // by `combine` (empty: no other process).
+  GridCorrection solve(const FluidFields& f, std::size_t n, const std::vector<double>& divergence, double dt,
+                       const CellCombine& combine);
   long factorisations() const { return poisson_.factorisations(); }
   const GridSpec& grid() const { return poisson_.grid(); }
 

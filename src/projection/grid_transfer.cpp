@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace arksph {
 
@@ -45,13 +46,14 @@ CellWeights cell_weights(const GridSpec& g, double x, double y) {
   return c;
 }
 
-GridDeposit deposit(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
-                    const double* q, double fallback) {
+DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                         const double* q) {
   const std::size_t nc = g.cells();
-  GridDeposit d;
+  DepositSums d;
   d.value.assign(nc, 0.0);
   d.weight.assign(nc, 0.0);
-  std::vector<double> lo(nc, HUGE_VAL), hi(nc, -HUGE_VAL);
+  d.lo.assign(nc, HUGE_VAL);
+  d.hi.assign(nc, -HUGE_VAL);
   for (std::size_t a = 0; a < n; ++a) {
     const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
     for (int k = 0; k < 4; ++k) {
@@ -59,19 +61,31 @@ GridDeposit deposit(const GridSpec& g, std::size_t n, const double* x, const dou
       const double wv = c.w[k] * volume[a];
       d.value[c.cell[k]] += wv * q[a];
       d.weight[c.cell[k]] += wv;
-      lo[c.cell[k]] = std::min(lo[c.cell[k]], q[a]);
-      hi[c.cell[k]] = std::max(hi[c.cell[k]], q[a]);
+      d.lo[c.cell[k]] = std::min(d.lo[c.cell[k]], q[a]);
+      d.hi[c.cell[k]] = std::max(d.hi[c.cell[k]], q[a]);
     }
   }
-  for (std::size_t i = 0; i < nc; ++i) {
+  return d;
+}
+
+GridDeposit finish_deposit(DepositSums&& s, double fallback) {
+  GridDeposit d;
+  d.value = std::move(s.value);
+  d.weight = std::move(s.weight);
+  for (std::size_t i = 0; i < d.value.size(); ++i) {
     if (d.weight[i] <= 0)
       d.value[i] = fallback;
-    else if (lo[i] == hi[i])
-      d.value[i] = lo[i];
+    else if (s.lo[i] == s.hi[i])
+      d.value[i] = s.lo[i];
     else
       d.value[i] /= d.weight[i];
   }
   return d;
+}
+
+GridDeposit deposit(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                    const double* q, double fallback) {
+  return finish_deposit(deposit_sums(g, n, x, y, volume, q), fallback);
 }
 
 std::vector<double> interpolate(const GridSpec& g, std::size_t n, const double* x, const double* y,

@@ -24,6 +24,18 @@ struct GridDeposit {
   std::vector<double> weight;  // sum_a w_ia V_a per cell
 };
 
+// What a deposit is made of, per cell, before the division: sum_a w_ia V_a q_a, sum_a w_ia V_a, and
+// the smallest and largest q of the contributing particles. The sums of disjoint sets of particles
+// (the ranks of a decomposed run) combine into the sums of their union by adding value and weight
+// and taking the minimum of lo and the maximum of hi.
+struct DepositSums {
+  std::vector<double> value, weight, lo, hi;
+};
+
+DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                         const double* q);
+GridDeposit finish_deposit(DepositSums&& sums, double fallback);
+
 // Volume-weighted mean of q over the particles near each cell. A cell whose contributing particles
 // all carry the same value gets exactly that value (so that a uniform density field is reproduced
 // bit for bit and the grid matrix is not refactorised for rounding noise).

@@ -189,3 +189,50 @@ TEST_CASE("gpps: the volume relaxation evens out the particle volume per cell") 
   CHECK(after / before < kMeasuredRatio * kMargin);
   CHECK(after / before > kMeasuredRatio / kMargin);
 }
+
+TEST_CASE("gpps: the deposits of two disjoint particle sets, combined, are the deposit of their union") {
+  // What the ranks of a decomposed run do (ProjectionGrid_Szewc2012.hpp): each deposits its own
+  // particles, the sums are added and the lows / highs reduced. 400 scattered particles on a 10 x 8
+  // grid, the value constant (2.5) left of x = 0.3 so that those cells must come out exactly 2.5.
+  GridSpec g;
+  g.nx = 10;
+  g.ny = 8;
+  g.h = 0.1;
+  const std::size_t n = 400;
+  std::vector<double> x(n), y(n), vol(n), q(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    x[a] = std::fmod(0.6180339887 * static_cast<double>(a), 1.0);
+    y[a] = 0.8 * std::fmod(0.7548776662 * static_cast<double>(a) + 0.1, 1.0);
+    vol[a] = 0.01 * (1 + 0.3 * std::sin(7.0 * static_cast<double>(a)));
+    q[a] = x[a] < 0.3 ? 2.5 : std::cos(3 * x[a]) + y[a];
+  }
+  const GridDeposit whole = deposit(g, n, x.data(), y.data(), vol.data(), q.data(), -1.0);
+  // Set A: the even particles, set B: the odd ones (so that both touch every cell).
+  std::vector<double> xs[2], ys[2], vs[2], qs[2];
+  for (std::size_t a = 0; a < n; ++a) {
+    xs[a % 2].push_back(x[a]);
+    ys[a % 2].push_back(y[a]);
+    vs[a % 2].push_back(vol[a]);
+    qs[a % 2].push_back(q[a]);
+  }
+  DepositSums sum = deposit_sums(g, xs[0].size(), xs[0].data(), ys[0].data(), vs[0].data(), qs[0].data());
+  const DepositSums other = deposit_sums(g, xs[1].size(), xs[1].data(), ys[1].data(), vs[1].data(), qs[1].data());
+  for (std::size_t i = 0; i < g.cells(); ++i) {
+    sum.value[i] += other.value[i];
+    sum.weight[i] += other.weight[i];
+    sum.lo[i] = std::min(sum.lo[i], other.lo[i]);
+    sum.hi[i] = std::max(sum.hi[i], other.hi[i]);
+  }
+  const GridDeposit combined = finish_deposit(std::move(sum), -1.0);
+  int constant_cells = 0;
+  for (std::size_t i = 0; i < g.cells(); ++i) {
+    // Only the order of the sums differs: a few ulps of the cell's value.
+    CHECK(std::abs(combined.value[i] - whole.value[i]) <= 1e-14 * std::max(1.0, std::abs(whole.value[i])));
+    CHECK(std::abs(combined.weight[i] - whole.weight[i]) <= 1e-14 * whole.weight[i]);
+    if (whole.value[i] == 2.5) {
+      ++constant_cells;
+      CHECK(combined.value[i] == 2.5);  // lo == hi over both sets: the value itself, not a quotient
+    }
+  }
+  CHECK(constant_cells >= 8);  // the columns left of x = 0.3 away from their right edge
+}

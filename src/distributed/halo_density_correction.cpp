@@ -14,39 +14,23 @@ HaloDensityCorrection::HaloDensityCorrection(const Scene& scene, const parallel:
       max_iterations_(scene.correction_max_iterations),
       spacing_(scene.spacing),
       newton_(scene.correction_solver == "newton"),
-      pinned_id_(pinned_id),
-      solver_(comm, scene.ppe_tolerance) {}
+      poisson_(comm, f, owned, pinned_id, scene.ppe_tolerance) {}
 
 void HaloDensityCorrection::particles_moved() {
   pstar_.clear();
-  solver_.invalidate();
+  poisson_.particles_moved();
 }
 
 void HaloDensityCorrection::fixed_point_step(const std::vector<double>& s, double* y) {
   const StateLayout L = owned_.layout();
   const std::size_t n = L.n;
-  const FluidFields& f = f_.evaluator().fields();
-  // Rows: the rank's particles numbered after the ranks below, the copies carrying their owners'.
-  const distributed_ppe::RowRange range = distributed_ppe::global_rows(comm_, n);
-  const distributed_ppe::GlobalRow pinned = distributed_ppe::row_of_id(comm_, owned_.ids(), range, pinned_id_);
-  std::vector<double> own_rows(n);
-  for (std::size_t a = 0; a < n; ++a) own_rows[a] = static_cast<double>(range.first + static_cast<std::int64_t>(a));
-  const std::vector<double> halo_rows = f_.halo_values(own_rows);
-  std::vector<distributed_ppe::GlobalRow> row_of(n + halo_rows.size());
-  for (std::size_t a = 0; a < n; ++a) row_of[a] = range.first + static_cast<std::int64_t>(a);
-  for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
   // Eq. 58 with the Laplacian of C&R eq. 19 at rho = rho0: the PPE's rows with the source 1 -
   // rho~/rho0 in place of div u* and dt = 1 (as one process's assemble_ppe(f, source, 1.0)).
-  distributed_ppe::assemble_rows(comm_, f, n, row_of, range, pinned, s, 1.0, rows_);
-  if (pstar_.size() != n) pstar_.assign(n, 0.0);
-  solver_.solve(rows_, pstar_);
+  poisson_.solve(s, 1.0, pstar_);
   ++stats_.iterations;
   // Eq. 57: r_a -= grad p*_a / rho0, the gradient in difference form with the copies' p* their owners'.
-  std::vector<double> p_all(pstar_);
-  const std::vector<double> halo_p = f_.halo_values(pstar_);
-  p_all.insert(p_all.end(), halo_p.begin(), halo_p.end());
   std::vector<double> dx, dy;
-  correction_shift(f, p_all, dx, dy, n);
+  correction_shift(f_.evaluator().fields(), poisson_.with_halo(pstar_), dx, dy, n);
   for (std::size_t a = 0; a < n; ++a) {
     y[L.pos(0) + a] += dx[a];
     if (L.dim == 2) y[L.pos(1) + a] += dy[a];

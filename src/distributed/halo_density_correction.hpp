@@ -18,8 +18,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
-#include "distributed_ppe/hypre_poisson.hpp"
-#include "distributed_ppe/ppe_rows.hpp"
+#include "distributed/halo_poisson.hpp"
 #include "distributed/halo_rhs.hpp"
 #include "distributed/rank_particles.hpp"
 #include "parallel/communicator.hpp"
@@ -52,9 +51,7 @@ class HaloDensityCorrection {
   int max_iterations_;
   double spacing_;
   bool newton_;
-  std::int64_t pinned_id_;
-  distributed_ppe::HyprePoisson solver_;
-  distributed_ppe::LocalRows rows_;
+  HaloPoisson poisson_;  // the fixed point's
   std::vector<double> pstar_;  // the fixed point's last solution, the rank's particles
   CorrectionStats stats_;
 };

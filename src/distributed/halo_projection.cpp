@@ -24,8 +24,7 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
     : comm_(comm),
       f_(f),
       owned_(owned),
-      pinned_id_(pinned_id),
-      solver_(comm, scene.ppe_tolerance),
+      poisson_(comm, f, owned, pinned_id, scene.ppe_tolerance),
       split_(scene),
       slip_origin_(split_.active() && scene.projection_points == "step"),
       centre_positions_(scene.centre_positions),
@@ -44,8 +43,7 @@ std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>&
 }
 
 void HaloProjection::particles_moved() {
-  numbered_ = false;
-  solver_.invalidate();  // the hierarchy was set up on the old numbering
+  poisson_.particles_moved();
   solution_.clear();
   y_prev_.clear();
   if (correction_) correction_->particles_moved();
@@ -164,26 +162,14 @@ void HaloProjection::project_on_grid(const FluidFields& f, const std::vector<dou
 void HaloProjection::project_on_particles(const FluidFields& f, std::vector<double>& div, double dt, double* u,
                                           double* v) {
   const std::size_t n = owned_.layout().n;
-  const auto ta = std::chrono::steady_clock::now();
-  if (!numbered_) {  // the rows of the rank's particles, after a deal or migration
-    range_ = distributed_ppe::global_rows(comm_, n);
-    pinned_row_ = distributed_ppe::row_of_id(comm_, owned_.ids(), range_, pinned_id_);
-    own_rows_.resize(n);
-    for (std::size_t a = 0; a < n; ++a) own_rows_[a] = static_cast<double>(range_.first + static_cast<std::int64_t>(a));
-    numbered_ = true;
-  }
-  // The halo copies' rows (the halo may have been exchanged anew by this or any earlier f).
-  const std::vector<double> halo_rows = f_.halo_values(own_rows_);
-  row_of_.resize(n + halo_rows.size());
-  for (std::size_t a = 0; a < n; ++a) row_of_[a] = range_.first + static_cast<std::int64_t>(a);
-  for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
-  distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, div, dt, rows_);
-  stats_.assembly_seconds += since(ta);
+  const double assembly_before = poisson_.assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (P_pinned = 0) as the next warm start, as in
   // one process (a start shifted by a constant would hand CG a smooth error).
-  const distributed_ppe::HypreSolveReport rep = solver_.solve(rows_, solution_);
-  stats_.solve_seconds += since(ts);
+  const distributed_ppe::HypreSolveReport rep = poisson_.solve(div, dt, solution_);
+  const double assembly = poisson_.assembly_seconds() - assembly_before;
+  stats_.assembly_seconds += assembly;
+  stats_.solve_seconds += since(ts) - assembly;
   ++stats_.solves;
   stats_.iterations += rep.iterations;
   stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;
@@ -191,26 +177,13 @@ void HaloProjection::project_on_particles(const FluidFields& f, std::vector<doub
   stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
 
   // 3. The level over all ranks: zero minimum or zero mean, then the offset.
-  double level = 0;
-  if (zero_min_level_) {
-    double lowest = std::numeric_limits<double>::infinity();
-    for (double p : solution_) lowest = std::min(lowest, p);
-    level = -comm_.max(-lowest);
-  } else {
-    double sum = 0;
-    for (double p : solution_) sum += p;
-    level = comm_.sum(sum) / static_cast<double>(range_.total);
-  }
+  const double level = poisson_.level(solution_, zero_min_level_);
   pressure_.resize(n);
   for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
-  // P at every real point of the evaluator: the rank's particles, then their copies' owners' P.
-  std::vector<double> p_all(pressure_);
-  const std::vector<double> halo_p = f_.halo_values(pressure_);
-  p_all.insert(p_all.end(), halo_p.begin(), halo_p.end());
-
-  // Velocity correction, C&R eq. 11 (ghosts carry their source's P, plus the hydrostatic step under
-  // a body force: FluidFields::point_pressure).
-  subtract_pressure_gradient(f, p_all, dt, n, u, v);
+  // Velocity correction, C&R eq. 11, with P at every real point of the evaluator (the copies their
+  // owners'); ghosts carry their source's P, plus the hydrostatic step under a body force
+  // (FluidFields::point_pressure).
+  subtract_pressure_gradient(f, poisson_.with_halo(pressure_), dt, n, u, v);
 }
 
 }  // namespace arksph::distributed

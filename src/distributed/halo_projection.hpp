@@ -38,10 +38,9 @@
 
 #include "core/scene.hpp"
 #include "distributed/halo_density_correction.hpp"
+#include "distributed/halo_poisson.hpp"
 #include "distributed/halo_rhs.hpp"
 #include "distributed/rank_particles.hpp"
-#include "distributed_ppe/hypre_poisson.hpp"
-#include "distributed_ppe/ppe_rows.hpp"
 #include "parallel/communicator.hpp"
 #include "projection/body_force_split.hpp"
 #include "projection/ProjectionGrid_Szewc2012.hpp"
@@ -83,8 +82,7 @@ class HaloProjection {
   const parallel::Communicator& comm_;
   HaloRhs& f_;
   RankParticles& owned_;
-  std::int64_t pinned_id_;
-  distributed_ppe::HyprePoisson solver_;
+  HaloPoisson poisson_;
   void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
   // Steps 2-3 on the particles (hypre) or on the grid (isph-gpps), from the owned particles' div(u*).
   void project_on_particles(const FluidFields& f, std::vector<double>& div, double dt, double* u, double* v);
@@ -95,13 +93,6 @@ class HaloProjection {
   bool slip_origin_;      // the stages' wall images take the increment (t - t_n) g (not with stages projected)
   bool centre_positions_, difference_divergence_, zero_min_level_;
   double pressure_offset_;
-  // Valid while the rank's particles stay (cleared by particles_moved).
-  bool numbered_ = false;
-  distributed_ppe::RowRange range_;
-  distributed_ppe::GlobalRow pinned_row_ = -1;
-  std::vector<double> own_rows_;                     // global row of each owned particle
-  std::vector<distributed_ppe::GlobalRow> row_of_;   // owned, then halo copies
-  distributed_ppe::LocalRows rows_;
   std::vector<double> solution_;  // hypre's solution (P_pinned = 0): the next warm start
   std::vector<double> pressure_;  // P at the level chosen, owned particles
   std::vector<std::int64_t> pressure_ids_;

@@ -21,6 +21,7 @@
 #include "distributed/halo_rhs.hpp"
 #ifdef ARKSPH_WITH_HYPRE
 #include "distributed/halo_projection.hpp"
+#include "projection/ConstrainedPressure.hpp"
 #endif
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
@@ -132,8 +133,11 @@ void check_distributable(const Scene& scene, int ranks) {
 #ifndef ARKSPH_WITH_HYPRE
     throw InputError(scene.source + ": scheme " + scene.scheme + " (this build has no hypre for the pressure solve)" + on);
 #endif
-    if (scene.projection != "cummins_rudman")
+    if (scene.projection == "orthogonal")
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
+    if (scene.projection == "constrained" && scene.density_correction != "none")
+      throw InputError(scene.source + ": method.density_correction = " + scene.density_correction +
+                       " with method.projection = constrained" + on);
     if (scene.density_correction != "none" && scene.correction_solver == "kinsol")
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != "approximate")
@@ -191,6 +195,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   // model's initial positions go now (a new deal reads only masses, densities, phases and ids; the
   // initial velocities stay until the state checker has read them).
   std::vector<double>().swap(y0);
+  // The constrained projection's decay rate reads the whole model's initial speeds.
+  const double relaxation = scene.pressure_in_f() ? relaxation_rate(scene, rhs) : 0.0;
   rhs.release_particles();
   for (auto* v : {&model.particles.init_pos[0], &model.particles.init_pos[1]}) std::vector<double>().swap(*v);
   HaloRhs f(scene, model, comm, mine);
@@ -243,9 +249,10 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   // set-up's again for a checkpoint written on ranks (so a restart pins the same particle).
   std::unique_ptr<HaloProjection> projection;
   if (model.projection) {
-    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, model.particles.id[0]);
+    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, model.particles.id[0], relaxation);
     for (std::string& term : model.terms)
       if (term == "projection:ppe-" + scene.ppe_solver) term = "projection:ppe-hypre";
+      else if (term == "projection:constrained-ppe-" + scene.ppe_solver) term = "projection:constrained-ppe-hypre";
     if (root && scheme_traits(scene.scheme).grid) {
       std::printf("  pressure Poisson equation: on the grid (KLU), the cell sums of every rank's particles all-reduced\n");
       std::fflush(stdout);
@@ -275,7 +282,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   };
   eo.stability = [&](double, const double* yl) { return stable(yl); };
 #ifdef ARKSPH_WITH_HYPRE
-  if (projection) {
+  if (projection && !projection->constrained()) {
     eo.postprocess = [&projection](double tt, double* yl) { projection->project(tt, yl); };
     if (scene.projection_points == "stages")
       eo.postprocess_stage = [&projection](double tt, double* yl) { projection->project_stage(tt, yl); };
@@ -292,10 +299,25 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
       f.eval(t, y.data(), ydot.data());  // the halo, and the acceleration for the stability limit
     }
     eo.initial_dt = h > 0 ? h : stable(y.data());
-    integrator = std::make_unique<ErkIntegrator>([&f](double tt, const double* yl, double* yd) { f.eval(tt, yl, yd); },
-                                                 y, t, eo);
+    RhsFunction rhs_fn = [&f](double tt, const double* yl, double* yd) { f.eval(tt, yl, yd); };
+#ifdef ARKSPH_WITH_HYPRE
+    if (projection && projection->constrained())  // the pressure inside f (halo_constrained_pressure.hpp)
+      rhs_fn = [&f, &projection](double tt, const double* yl, double* yd) {
+        f.eval(tt, yl, yd);
+        projection->constrain(yl, yd);
+      };
+#endif
+    integrator = std::make_unique<ErkIntegrator>(std::move(rhs_fn), y, t, eo);
     integrator->set_counter_offset(counters);
   };
+#ifdef ARKSPH_WITH_HYPRE
+  // A constrained projection starts from a divergence-free velocity (a restart already is).
+  if (projection && projection->constrained() && !restarting) {
+    std::vector<double> y = mine.state();
+    projection->project_initial(0.0, y.data());
+    mine.load(y.data());
+  }
+#endif
   start_integrator(checkpoints->start_time(), restarting ? checkpoints->restart().next_step : 0.0,
                    checkpoints->counters());
 

@@ -20,18 +20,20 @@ double since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                               RankParticles& owned, std::int64_t pinned_id)
+                               RankParticles& owned, std::int64_t pinned_id, double relaxation)
     : comm_(comm),
       f_(f),
       owned_(owned),
       poisson_(comm, f, owned, pinned_id, scene.ppe_tolerance),
       split_(scene),
-      slip_origin_(split_.active() && scene.projection_points == "step"),
+      slip_origin_(split_.active() && scene.projection_points == "step" && !scene.pressure_in_f()),
       centre_positions_(scene.centre_positions),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
+  if (scene.pressure_in_f())
+    constrained_ = std::make_unique<HaloConstrainedPressure>(scene, comm, f, owned, pinned_id, relaxation);
   if (scene.density_correction != "none") correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned, pinned_id);
 }
 
@@ -44,9 +46,31 @@ std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>&
 
 void HaloProjection::particles_moved() {
   poisson_.particles_moved();
+  if (constrained_) constrained_->particles_moved();
   solution_.clear();
   y_prev_.clear();
   if (correction_) correction_->particles_moved();
+}
+
+void HaloProjection::constrain(const double* y, double* ydot) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const distributed_ppe::HypreSolveReport rep = constrained_->constrain(y, ydot);
+  ++stats_.solves;
+  stats_.iterations += rep.iterations;
+  stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;
+  stats_.last_residual = rep.relative_residual;
+  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+  pressure_ = constrained_->pressure();
+  pressure_ids_ = owned_.ids();
+  const double s = since(t0);
+  stats_.seconds += s;
+  stats_.solve_seconds += s;
+}
+
+void HaloProjection::project_initial(double t, double* y) {
+  if (!constrained_) return;
+  const distributed_ppe::HypreSolveReport rep = constrained_->project_velocity(t, y);
+  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
 }
 
 void HaloProjection::begin_step(double t, const double* y) {

@@ -28,8 +28,11 @@
 // rank solves the whole grid problem (KLU, the same on every rank) and interpolates (1/rho) grad p
 // and p at its own particles; the level (zero minimum) over all ranks. The grid is replicated: its
 // memory and the all-reduce of 8 numbers a cell per step do not shrink with the rank count.
-// What this does not do (refused on several ranks by check_distributable): the constrained
-// projection, the density correction's KINSOL solver, and the exact operator (C&R eq. 18).
+// method.projection = "constrained" solves the pressure inside f instead (constrain, after each
+// evaluation; halo_constrained_pressure.hpp), and project() is not called.
+// What this does not do (refused on several ranks by check_distributable): the orthogonal
+// projection, the density correction with the constrained projection or with its KINSOL solver,
+// and the exact operator (C&R eq. 18).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -37,6 +40,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "distributed/halo_constrained_pressure.hpp"
 #include "distributed/halo_density_correction.hpp"
 #include "distributed/halo_poisson.hpp"
 #include "distributed/halo_rhs.hpp"
@@ -50,9 +54,16 @@ namespace arksph::distributed {
 
 class HaloProjection {
  public:
-  // pinned_id: the global id of the particle whose pressure is pinned to 0 for the whole run.
+  // pinned_id: the global id of the particle whose pressure is pinned to 0 for the whole run;
+  // relaxation: the constrained projection's alpha (relaxation_rate of the whole model).
   HaloProjection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f, RankParticles& owned,
-                 std::int64_t pinned_id);
+                 std::int64_t pinned_id, double relaxation);
+  // method.projection = "constrained": the pressure inside f.
+  bool constrained() const { return constrained_ != nullptr; }
+  // Collective. After f.eval(t, y, ydot): the constrained projection's -G p added to ydot.
+  void constrain(const double* y, double* ydot);
+  // Collective. The constrained projection's start: the velocities of y made divergence-free.
+  void project_initial(double t, double* y);
   // Remembers the rank's state at the start of the next step (for the centring of C&R eq. 12).
   void begin_step(double t, const double* y);
   // Collective. Projects the rank's state y (the end of the step, time t) in place.
@@ -88,6 +99,7 @@ class HaloProjection {
   void project_on_particles(const FluidFields& f, std::vector<double>& div, double dt, double* u, double* v);
   void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* u, double* v);
   std::unique_ptr<GridProjection> grid_;  // isph-gpps only
+  std::unique_ptr<HaloConstrainedPressure> constrained_;  // method.projection = "constrained" only
 
   BodyForceSplit split_;  // the body force's wall flux as Neumann data (body_force_split.hpp)
   bool slip_origin_;      // the stages' wall images take the increment (t - t_n) g (not with stages projected)

@@ -113,6 +113,7 @@ void HaloRhs::build_evaluator() {
   }
   RhsOptions options;
   options.periodic_images = false;
+  options.pairs_at_every_f = scene_.pressure_in_f();  // the constrained projection walks the pairs of each f
   evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),
                                               terms_from_scene(scene_, model_.sound_speed), options);
   evaluator_->set_slip_origin(slip_on_, slip_t0_);

@@ -50,6 +50,9 @@ class HaloRhs {
   double local_max_acceleration() const { return max_accel_; }
   // The evaluator of the last eval: its fields hold this rank's particles first, then the halo.
   const RhsEvaluator& evaluator() const { return *evaluator_; }
+  // The state the evaluator took at the last eval, in its layout: this rank's particles, then the
+  // halo copies with their owners' values (the velocities a pair loop reads at the copies).
+  const double* evaluated_state() const { return y_all_.data(); }
   // Frees the evaluator's neighbour list and fields until the next eval, which builds them anew
   // (RhsEvaluator::release_storage): while rank 0 holds a whole frame or checkpoint.
   void release_storage() {

@@ -3,6 +3,8 @@
 // over the stored pairs of the real particles [0, n). P holds a value per real point of f; ghosts
 // read their source's value (plus the hydrostatic step under a body force: FluidFields::point_pressure).
 // Shared by the one-process projection and the decomposed one (which passes its halo's P after its own).
+// steps = false: ghosts read their source's value only (a potential, not a pressure: the
+// constrained projection's start).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -13,13 +15,13 @@
 namespace arksph {
 
 inline void subtract_pressure_gradient(const FluidFields& f, const std::vector<double>& p, double dt, std::size_t n,
-                                       double* u, double* v) {
+                                       double* u, double* v, bool steps = true) {
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     const double pa = p[a] / (f.rho[a] * f.rho[a]);
     double gx = 0, gy = 0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double pb = f.point_pressure(p, b) / (f.rho[b] * f.rho[b]);
+      const double pb = (steps ? f.point_pressure(p, b) : p[f.src[b]]) / (f.rho[b] * f.rho[b]);
       const double c = f.m[b] * (pb + pa) * F;
       gx += c * rx;
       gy += c * ry;

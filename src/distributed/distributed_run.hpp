@@ -36,10 +36,9 @@
 namespace arksph::distributed {
 
 // InputError (one line, naming the key) for what a run over several ranks does not do yet:
-// time.imex, dimension other than 2; under isph and isph-gpps anything but the projection after
-// each step (and stage) with hypre or the grid and the Newton or fixed-point density correction
-// (halo_projection.hpp): the constrained projection, the correction's KINSOL solver, the exact
-// operator; and builds without hypre.
+// time.imex, dimension other than 2; under isph and isph-gpps (halo_projection.hpp): the
+// orthogonal projection, the density correction with the constrained projection or with its
+// KINSOL solver, the exact operator; and builds without hypre.
 void check_distributable(const Scene& scene, int ranks);
 
 // Collective over `comm` (size > 1). The RunResult is the same on every rank.

@@ -55,11 +55,7 @@ void HaloProjection::particles_moved() {
 void HaloProjection::constrain(const double* y, double* ydot) {
   const auto t0 = std::chrono::steady_clock::now();
   const distributed_ppe::HypreSolveReport rep = constrained_->constrain(y, ydot);
-  ++stats_.solves;
-  stats_.iterations += rep.iterations;
-  stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;
-  stats_.last_residual = rep.relative_residual;
-  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+  stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
   pressure_ = constrained_->pressure();
   pressure_ids_ = owned_.ids();
   const double s = since(t0);
@@ -165,11 +161,7 @@ void HaloProjection::project_on_grid(const FluidFields& f, const std::vector<dou
   };
   GridCorrection c = grid_->solve(f, n, div, dt, combine);
   stats_.solve_seconds += since(ts);
-  ++stats_.solves;
-  stats_.iterations += 1;
-  stats_.symbolic_analyses += c.refactorised ? 1 : 0;
-  stats_.last_residual = c.residual;
-  stats_.max_residual = std::max(stats_.max_residual, c.residual);
+  stats_.record_solve(1, c.refactorised, c.residual);
   pressure_ = std::move(c.pressure);
   if (zero_min_level_) {  // the grid's p has zero mean over the cells; P >= 0 over every rank
     double lowest = std::numeric_limits<double>::infinity();
@@ -194,11 +186,7 @@ void HaloProjection::project_on_particles(const FluidFields& f, std::vector<doub
   const double assembly = poisson_.assembly_seconds() - assembly_before;
   stats_.assembly_seconds += assembly;
   stats_.solve_seconds += since(ts) - assembly;
-  ++stats_.solves;
-  stats_.iterations += rep.iterations;
-  stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;
-  stats_.last_residual = rep.relative_residual;
-  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+  stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
 
   // 3. The level over all ranks: zero minimum or zero mean, then the offset.
   const double level = poisson_.level(solution_, zero_min_level_);

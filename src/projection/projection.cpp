@@ -236,11 +236,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
                                        : std::accumulate(solution_.begin(), solution_.end(), 0.0) / static_cast<double>(n);
   pressure_.resize(n);
   for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
-  ++stats_.solves;
-  stats_.iterations += rep.iterations;
-  stats_.symbolic_analyses += rep.refactored_symbolic ? 1 : 0;
-  stats_.last_residual = rep.relative_residual;
-  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+  stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
 
   // 3. Velocity correction, C&R eq. 11.
   double* u = y + L.vel(0);
@@ -254,11 +250,7 @@ void Projection::project_on_grid(const FluidFields& f, const std::vector<double>
   const auto ts = std::chrono::steady_clock::now();
   GridCorrection c = grid_->solve(f, div, dt);
   stats_.solve_seconds += since(ts);
-  ++stats_.solves;
-  stats_.iterations += 1;
-  stats_.symbolic_analyses += c.refactorised ? 1 : 0;
-  stats_.last_residual = c.residual;
-  stats_.max_residual = std::max(stats_.max_residual, c.residual);
+  stats_.record_solve(1, c.refactorised, c.residual);
   pressure_ = std::move(c.pressure);
   if (zero_min_level_) {
     const double level = *std::min_element(pressure_.begin(), pressure_.end());

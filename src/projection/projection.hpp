@@ -38,6 +38,15 @@ struct ProjectionStats {
   double assembly_seconds = 0;  // divergence, source and matrix of the particle PPE
   double last_residual = 0, max_residual = 0;
   long iterations = 0, symbolic_analyses = 0;  // isph-gpps: symbolic_analyses counts grid factorisations
+  // One solve's counts: its iterations, whether it set up its factorisation or hierarchy anew, and
+  // its relative residual.
+  void record_solve(long solve_iterations, bool set_up, double residual) {
+    ++solves;
+    iterations += solve_iterations;
+    symbolic_analyses += set_up ? 1 : 0;
+    last_residual = residual;
+    max_residual = residual > max_residual ? residual : max_residual;
+  }
 };
 
 class Projection {

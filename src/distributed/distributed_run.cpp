@@ -135,9 +135,6 @@ void check_distributable(const Scene& scene, int ranks) {
 #endif
     if (scene.projection == "orthogonal")
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
-    if (scene.projection == "constrained" && scene.density_correction != "none")
-      throw InputError(scene.source + ": method.density_correction = " + scene.density_correction +
-                       " with method.projection = constrained" + on);
     if (scene.density_correction != "none" && scene.correction_solver == "kinsol")
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != "approximate")
@@ -195,8 +192,8 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   // model's initial positions go now (a new deal reads only masses, densities, phases and ids; the
   // initial velocities stay until the state checker has read them).
   std::vector<double>().swap(y0);
-  // The constrained projection's decay rate reads the whole model's initial speeds.
-  const double relaxation = scene.pressure_in_f() ? relaxation_rate(scene, rhs) : 0.0;
+  // The constrained projection's rates read the whole model's initial speeds.
+  const double flow = scene.pressure_in_f() ? flow_rate(scene, rhs) : 0.0;
   rhs.release_particles();
   for (auto* v : {&model.particles.init_pos[0], &model.particles.init_pos[1]}) std::vector<double>().swap(*v);
   HaloRhs f(scene, model, comm, mine);
@@ -249,7 +246,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   // set-up's again for a checkpoint written on ranks (so a restart pins the same particle).
   std::unique_ptr<HaloProjection> projection;
   if (model.projection) {
-    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, model.particles.id[0], relaxation);
+    projection = std::make_unique<HaloProjection>(scene, comm, f, mine, model.particles.id[0], flow);
     for (std::string& term : model.terms)
       if (term == "projection:ppe-" + scene.ppe_solver) term = "projection:ppe-hypre";
       else if (term == "projection:constrained-ppe-" + scene.ppe_solver) term = "projection:constrained-ppe-hypre";

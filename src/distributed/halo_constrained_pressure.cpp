@@ -1,5 +1,6 @@
 #include "distributed/halo_constrained_pressure.hpp"
 
+#include "distributed/halo_density_correction.hpp"
 #include "projection/divergence_operator.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "projection/velocity_correction.hpp"
@@ -7,13 +8,17 @@
 namespace arksph::distributed {
 
 HaloConstrainedPressure::HaloConstrainedPressure(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                                                 const RankParticles& owned, std::int64_t pinned_id, double relaxation)
-    : f_(f),
+                                                 const RankParticles& owned, std::int64_t pinned_id, double flow_rate)
+    : comm_(comm),
+      f_(f),
       owned_(owned),
       split_(scene),
-      relaxation_(relaxation),
+      relaxation_(scene.constraint_relaxation * flow_rate),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
-      poisson_(comm, f, owned, pinned_id, scene.ppe_tolerance) {}
+      poisson_(comm, f, owned, pinned_id, scene.ppe_tolerance) {
+  if (scene.density_correction == "pozorski_wawrenczuk")
+    density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate);
+}
 
 void HaloConstrainedPressure::particles_moved() {
   poisson_.particles_moved();
@@ -61,6 +66,9 @@ distributed_ppe::HypreSolveReport HaloConstrainedPressure::constrain(const doubl
   p_.resize(n);
   for (std::size_t a = 0; a < n; ++a) p_[a] = solution_[a] - level;
   subtract_pressure_gradient(f, poisson_.with_halo(p_), 1.0, n, ydot + L.vel(0), two_d ? ydot + L.vel(1) : nullptr);
+  // 4. The P-W correction as a velocity in dr/dt.
+  if (density_)
+    density_->add_velocity(f, rank_correction_span(comm_, f_, n), ydot + L.pos(0), two_d ? ydot + L.pos(1) : nullptr);
   return rep;
 }
 

@@ -15,10 +15,13 @@
 //   3. p at the scene's level over all ranks (zero mean or zero minimum), handed to the copies, and
 //      ydot -= G p (C&R eq. 11, wall points at P_src + rho g . d).
 // The start (project_velocity) is one approximate projection u <- u - G phi, L phi = D u, as in one
-// process. The Pozorski-Wawrenczuk correction as a velocity inside f and the orthogonal projection
-// are one process's (refused on ranks by check_distributable).
+// process. With method.density_correction = "pozorski_wawrenczuk" the correction is the velocity of
+// projection/density_relaxation.hpp added to dr/dt, its Newton direction over the ranks
+// (rank_correction_span, as the step-wise correction's). The orthogonal projection is one process's
+// (refused on ranks by check_distributable).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/scene.hpp"
@@ -27,14 +30,16 @@
 #include "distributed/rank_particles.hpp"
 #include "parallel/communicator.hpp"
 #include "projection/body_force_split.hpp"
+#include "projection/density_relaxation.hpp"
 
 namespace arksph::distributed {
 
 class HaloConstrainedPressure {
  public:
-  // relaxation: alpha (projection/ConstrainedPressure.hpp relaxation_rate, from the whole model).
+  // flow_rate: U / h of the whole model (projection/ConstrainedPressure.hpp flow_rate), which sets
+  // alpha = beta U / h and the correction's kappa = gamma U / h.
   HaloConstrainedPressure(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                          const RankParticles& owned, std::int64_t pinned_id, double relaxation);
+                          const RankParticles& owned, std::int64_t pinned_id, double flow_rate);
   // Collective. After f.eval(t, y, ydot): subtracts G p from the velocity block of the rank's ydot.
   distributed_ppe::HypreSolveReport constrain(const double* y, double* ydot);
   // Collective. u <- u - G phi with L phi = D u, the fields refreshed here (the start of a run).
@@ -44,6 +49,7 @@ class HaloConstrainedPressure {
   void particles_moved();
 
  private:
+  const parallel::Communicator& comm_;
   HaloRhs& f_;
   const RankParticles& owned_;
   BodyForceSplit split_;
@@ -52,6 +58,7 @@ class HaloConstrainedPressure {
   HaloPoisson poisson_;
   std::vector<double> solution_;  // the pinned system's solution of the last f: the next warm start
   std::vector<double> p_;
+  std::unique_ptr<DensityRelaxation> density_;  // the P-W correction inside f, or null
 };
 
 }  // namespace arksph::distributed

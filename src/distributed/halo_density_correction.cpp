@@ -37,18 +37,18 @@ void HaloDensityCorrection::fixed_point_step(const std::vector<double>& s, doubl
   }
 }
 
-CorrectionSpan HaloDensityCorrection::span() const {
+CorrectionSpan rank_correction_span(const parallel::Communicator& comm, const HaloRhs& f, std::size_t own) {
   CorrectionSpan s;
-  s.own = owned_.layout().n;
-  s.sum = [this](double v) { return comm_.sum(v); };
-  s.extend = [this](std::vector<double>& v) {
-    const std::vector<double> copies = f_.halo_values(v);
+  s.own = own;
+  s.sum = [&comm](double v) { return comm.sum(v); };
+  s.extend = [&f](std::vector<double>& v) {
+    const std::vector<double> copies = f.halo_values(v);
     v.insert(v.end(), copies.begin(), copies.end());
-    if (v.size() != f_.evaluator().fields().n_real)
+    if (v.size() != f.evaluator().fields().n_real)
       throw std::logic_error("density correction: the halo values do not match the evaluator's points");
   };
-  s.gather = [this](const std::vector<double>& v) { return comm_.allgatherv(v); };
-  s.any = [this](bool v) { return comm_.max(static_cast<std::int64_t>(v)) > 0; };
+  s.gather = [&comm](const std::vector<double>& v) { return comm.allgatherv(v); };
+  s.any = [&comm](bool v) { return comm.max(static_cast<std::int64_t>(v)) > 0; };
   return s;
 }
 

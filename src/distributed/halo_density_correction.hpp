@@ -27,6 +27,11 @@
 
 namespace arksph::distributed {
 
+// The correction's span on a rank (correction_newton.hpp): the rank's `own` particles, sums over
+// the ranks, the halo copies' values from their owners, every rank's values gathered. Collective in
+// each of its reductions.
+CorrectionSpan rank_correction_span(const parallel::Communicator& comm, const HaloRhs& f, std::size_t own);
+
 class HaloDensityCorrection {
  public:
   // pinned_id: the global id of the particle whose p* is pinned to 0 (the fixed point's Poisson problem).
@@ -40,7 +45,7 @@ class HaloDensityCorrection {
   const CorrectionStats& stats() const { return stats_; }
 
  private:
-  CorrectionSpan span() const;
+  CorrectionSpan span() const { return rank_correction_span(comm_, f_, owned_.layout().n); }
   // One fixed-point iteration (eq. 58 solved, eq. 57 applied) from the fields of y; s: the density
   // fluctuation of the rank's particles.
   void fixed_point_step(const std::vector<double>& s, double* y);

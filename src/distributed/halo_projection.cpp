@@ -20,7 +20,7 @@ double since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                               RankParticles& owned, std::int64_t pinned_id, double relaxation)
+                               RankParticles& owned, std::int64_t pinned_id, double flow_rate)
     : comm_(comm),
       f_(f),
       owned_(owned),
@@ -33,8 +33,9 @@ HaloProjection::HaloProjection(const Scene& scene, const parallel::Communicator&
       pressure_offset_(scene.ppe_pressure_offset) {
   if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
   if (scene.pressure_in_f())
-    constrained_ = std::make_unique<HaloConstrainedPressure>(scene, comm, f, owned, pinned_id, relaxation);
-  if (scene.density_correction != "none") correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned, pinned_id);
+    constrained_ = std::make_unique<HaloConstrainedPressure>(scene, comm, f, owned, pinned_id, flow_rate);
+  // The constrained projection carries the correction inside f (HaloConstrainedPressure).
+  if (scene.density_correction != "none" && !scene.pressure_in_f()) correction_ = std::make_unique<HaloDensityCorrection>(scene, comm, f, owned, pinned_id);
 }
 
 std::vector<double> HaloProjection::pressure_at(const std::vector<std::int64_t>& ids, std::size_t n) const {

@@ -31,8 +31,7 @@
 // method.projection = "constrained" solves the pressure inside f instead (constrain, after each
 // evaluation; halo_constrained_pressure.hpp), and project() is not called.
 // What this does not do (refused on several ranks by check_distributable): the orthogonal
-// projection, the density correction with the constrained projection or with its KINSOL solver,
-// and the exact operator (C&R eq. 18).
+// projection, the density correction's KINSOL solver, and the exact operator (C&R eq. 18).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -55,9 +54,9 @@ namespace arksph::distributed {
 class HaloProjection {
  public:
   // pinned_id: the global id of the particle whose pressure is pinned to 0 for the whole run;
-  // relaxation: the constrained projection's alpha (relaxation_rate of the whole model).
+  // flow_rate: U / h of the whole model (the constrained projection's rates).
   HaloProjection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f, RankParticles& owned,
-                 std::int64_t pinned_id, double relaxation);
+                 std::int64_t pinned_id, double flow_rate);
   // method.projection = "constrained": the pressure inside f.
   bool constrained() const { return constrained_ != nullptr; }
   // Collective. After f.eval(t, y, ydot): the constrained projection's -G p added to ydot.

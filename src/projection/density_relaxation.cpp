@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "projection/correction_newton.hpp"
 
 namespace arksph {
 
@@ -15,10 +14,10 @@ constexpr double kMaxShift = 0.1;
 DensityRelaxation::DensityRelaxation(const Scene& scene, double rate)
     : rate_(rate), cap_(kMaxShift * scene.spacing) {}
 
-int DensityRelaxation::add_velocity(const FluidFields& f, double* xdot, double* ydot) {
-  const std::size_t n = f.n_real;
-  last_error_ = density_fluctuation(f, s_);
-  const int iterations = newton_shift(f, s_, p_, dx_, dy_);
+int DensityRelaxation::add_velocity(const FluidFields& f, const CorrectionSpan& span, double* xdot, double* ydot) {
+  const std::size_t n = span.own;
+  last_error_ = density_fluctuation(f, span, s_);
+  const int iterations = newton_shift(f, span, s_, p_, dx_, dy_);
   const double inv_cap2 = 1.0 / (cap_ * cap_);
   for (std::size_t a = 0; a < n; ++a) {
     const double len2 = dx_[a] * dx_[a] + (ydot ? dy_[a] * dy_[a] : 0.0);

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "projection/correction_newton.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -31,7 +32,10 @@ class DensityRelaxation {
   DensityRelaxation(const Scene& scene, double rate);
   // Adds kappa dr to (xdot, ydot) (ydot null in 1D) at the fields of the last eval; returns the
   // Krylov iterations.
-  int add_velocity(const FluidFields& f, double* xdot, double* ydot);
+  int add_velocity(const FluidFields& f, double* xdot, double* ydot) { return add_velocity(f, local_span(f), xdot, ydot); }
+  // The same for the span's own particles (one rank of a decomposed run: sums over the ranks, the
+  // halo copies' values from their owners; projection/correction_newton.hpp).
+  int add_velocity(const FluidFields& f, const CorrectionSpan& span, double* xdot, double* ydot);
   double rate() const { return rate_; }
   // r.m.s. of the density fluctuation at the last add_velocity (Szewc eq. 56).
   double last_error() const { return last_error_; }

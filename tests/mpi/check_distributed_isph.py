@@ -32,10 +32,10 @@ against the one-process run, whose KLU solves each PPE exactly (to round-off):
     every rank) on the spin-down with migrations, the vortex and the tank, against one process as
     above;
   - the constrained projection (pressure inside f) on the periodic vortex, the spin-down with
-    migrations and the tank, against one process as above, with a solve in every f;
+    migrations (also with the P-W correction as a velocity inside f) and the tank, against one
+    process as above, with a solve in every f;
   - what the ranks do not run exits 2 on every rank with one message naming the key: the
-    orthogonal projection, the density correction inside f (with the constrained projection) and
-    with its KINSOL solver, the exact operator.
+    orthogonal projection, the density correction's KINSOL solver, the exact operator.
 
 usage: check_distributed_isph.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC FLAGS ...]
 """
@@ -194,6 +194,10 @@ constrained = ["--set", "method.projection=constrained"]
 compare("vortex_constrained", [os.path.join(source, "cases/isph_order/taylor_green_re100.toml"), "--set", "time.end=0.1",
                                "--set", "output.every=0.1"] + tol, in_f=True)
 compare("spin_down_constrained", spin + constrained + ["--set", "method.reorder_every=5"], in_f=True)
+# The P-W correction as a velocity inside f (the Newton direction over the ranks), with migrations:
+# positions within POISSON of the spacing too.
+compare("spin_down_constrained_pw", spin + constrained + ["--set", "method.density_correction=pozorski_wawrenczuk",
+                                                          "--set", "method.reorder_every=5"], in_f=True, spacing=0.02)
 compare("tank_constrained", [os.path.join(source, "cases/hydrostatic_tank/scene.toml"), "--set", "time.end=0.02",
                             "--set", "output.every=0.02"] + tol + constrained, speed=0.02, in_f=True)
 compare("spin_down_loose", spin, ranks_args=["--set", "method.ppe_tolerance=1e-5"], within=False, ranks_list=(2,))
@@ -246,9 +250,6 @@ for ranks in (1, 2, 3):
           "a blow-up in the projection on %d rank(s): exit %s, %s" % (ranks, code, msg[-1][:100] if msg else ""))
 
 refused = [("method.projection = orthogonal", ["--set", "method.projection=orthogonal"], "method.projection"),
-           ("the correction inside f", ["--set", "method.projection=constrained",
-                                        "--set", "method.density_correction=pozorski_wawrenczuk"],
-            "method.density_correction"),
            ("method.correction_solver = kinsol", ["--set", "method.density_correction=pozorski_wawrenczuk",
                                                   "--set", "method.correction_solver=kinsol"],
             "method.correction_solver"),

@@ -165,9 +165,7 @@ void HaloProjection::project_on_grid(const FluidFields& f, const std::vector<dou
   stats_.record_solve(1, c.refactorised, c.residual);
   pressure_ = std::move(c.pressure);
   if (zero_min_level_) {  // the grid's p has zero mean over the cells; P >= 0 over every rank
-    double lowest = std::numeric_limits<double>::infinity();
-    for (double p : pressure_) lowest = std::min(lowest, p);
-    const double level = -comm_.max(-lowest);
+    const double level = poisson_.level(pressure_, true);
     for (double& p : pressure_) p -= level;
   }
   // Velocity correction, Szewc eq. 30, with (1/rho) grad p from the grid.

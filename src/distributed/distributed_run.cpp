@@ -33,6 +33,7 @@
 #include "io/checkpoint.hpp"
 #include "io/pvtp_writer.hpp"
 #include "run/checkpointing.hpp"
+#include "run/cpu_time.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_folder.hpp"
 #include "run/output_resume.hpp"
@@ -449,8 +450,10 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   // The checkpoint of the whole state at t, written by rank 0. Returns the path.
   const auto write_checkpoint_at = [&](double at, const std::vector<double>& all) {
     const long reflected = reflections();
+    const double cpu = comm.sum(process_cpu_seconds());  // all ranks' CPU time so far
     together(comm, [&] {
-      if (root) checkpoints->write_state(at, all.data(), integrator->stats(), integrator->next_step(), frame, reflected);
+      if (root)
+        checkpoints->write_state(at, all.data(), integrator->stats(), integrator->next_step(), frame, reflected, cpu);
     });
     last_checkpoint = at;
     return checkpoints->path();
@@ -561,6 +564,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   Verdict last{result.exit_code, result.message};
   const long reflected = reflections();
+  const double cpu = checkpoints->earlier_cpu_seconds() + comm.sum(process_cpu_seconds());
   // The peak resident memory of every rank (getrusage; kB on Linux), for summary.json.
   std::vector<std::int64_t> peak_kb;
   {
@@ -582,6 +586,7 @@ RunResult run_distributed(const Scene& scene, const RunOptions& options, const p
     out->set_mpi(mpi);
     if (scene.reorder_every > 0) out->set_reorders(migrations, migration_seconds);
     out->set_stepping_seconds(stepping);
+    out->set_cpu_seconds(cpu);
 #ifdef ARKSPH_WITH_HYPRE
     if (projection) out->set_projection_report(projection->stats(), projection->solver_name());
     if (projection && projection->correction()) out->set_correction_report(projection->correction()->stats());

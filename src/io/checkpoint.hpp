@@ -33,6 +33,8 @@ struct Checkpoint {
   long output_frame = 0;        // output frames written so far (index of the next one)
   long checkpoint_index = 0;    // scheduled checkpoints written so far (output.checkpoint_every)
   long wall_reflections = 0;
+  double cpu_seconds = 0;       // CPU time of the run up to this state, over all restarts (run/cpu_time.hpp);
+                                // 0 in files that lack it
   std::string scene_toml;       // Scene::resolved_toml of the run that wrote it
   std::string run_id;           // the run's id (run/output_folder.hpp); "" in files that lack it
   std::vector<double> state;    // y in StateLayout order, size layout().size()

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
+#include "run/cpu_time.hpp"
 #include "run/restart_keys.hpp"
 
 namespace arksph {
@@ -131,11 +132,12 @@ void Checkpointer::at_end(double t, TimeIntegrator& integrator, long frames, lon
 }
 
 std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frames, long reflections) {
-  return write_state(t, integrator.state(), integrator.stats(), integrator.next_step(), frames, reflections);
+  return write_state(t, integrator.state(), integrator.stats(), integrator.next_step(), frames, reflections,
+                     process_cpu_seconds());
 }
 
 std::string Checkpointer::write_state(double t, const double* y, const ErkStats& st, double next_step, long frames,
-                                      long reflections) {
+                                      long reflections, double segment_cpu) {
   const StateLayout& L = model_.rhs->layout();
   Checkpoint c;
   c.dimension = L.dim;
@@ -152,6 +154,7 @@ std::string Checkpointer::write_state(double t, const double* y, const ErkStats&
   c.output_frame = frames;
   c.checkpoint_index = next_;
   c.wall_reflections = reflections;
+  c.cpu_seconds = earlier_cpu_seconds() + segment_cpu;
   c.scene_toml = scene_.resolved_toml;
   c.run_id = run_id_;
   c.state.assign(y, y + L.size());

@@ -70,8 +70,12 @@ class Checkpointer {
   bool take_due(double t);
   // Writes the checkpoint of the whole state y (the model's layout and particle order) with the
   // integrator's counters `st` and its next step size. Returns the path.
+  // `segment_cpu` is the CPU time of this run since it started (all ranks'); the checkpoint
+  // stores it added to the earlier segments' (earlier_cpu_seconds).
   std::string write_state(double t, const double* y, const ErkStats& st, double next_step, long frames,
-                          long reflections);
+                          long reflections, double segment_cpu);
+  // CPU time of the runs this one continues (0 for a run from t = 0).
+  double earlier_cpu_seconds() const { return restart_ ? restart_->cpu_seconds : 0.0; }
 
  private:
   bool due(double t) const;

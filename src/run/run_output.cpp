@@ -193,6 +193,7 @@ void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wa
   j.set("error_test_failures", stats.error_test_fails);
   j.set("wall_reflections", wall_reflections).set("neighbor_rebuilds", neighbor_rebuilds);
   j.set("wall_seconds", wall_seconds);
+  if (cpu_seconds_ >= 0) j.set("cpu_seconds", cpu_seconds_);
   j.set("status", result.exit_code == 0 ? "ok" : result.interrupted ? "interrupted" : "failed");
   if (result.exit_code != 0) j.set("failure", result.message);
   j.set("frames", frames_);

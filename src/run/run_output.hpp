@@ -68,6 +68,9 @@ class RunOutput {
   // summary.json timing.stepping: the wall time of the steps alone (each step with its checks,
   // reflections and re-sorts or migrations), without set-up, frames and checkpoints.
   void set_stepping_seconds(double seconds) { stepping_seconds_ = seconds; }
+  // summary.json cpu_seconds: CPU time of the run (user + system, all threads and ranks), summed
+  // over its restarts (run/cpu_time.hpp).
+  void set_cpu_seconds(double seconds) { cpu_seconds_ = seconds; }
 
  private:
   std::vector<std::string> csv_columns() const;
@@ -90,6 +93,7 @@ class RunOutput {
   long reorders_ = -1;  // -1: re-sorting off
   int pieces_ = 0;      // 0: whole frames; else the ranks whose pieces a frame's index names
   double stepping_seconds_ = -1;  // not set: no timing.stepping
+  double cpu_seconds_ = -1;       // not set: no cpu_seconds
   double reorder_seconds_ = 0;
   std::string ppe_solver_;  // empty: the model's projection reports itself
   ProjectionStats ppe_stats_;

@@ -13,6 +13,7 @@
 #include <new>
 
 #include "run/checkpointing.hpp"  // checkpoints and restart
+#include "run/cpu_time.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_folder.hpp"
 #include "run/output_start.hpp"
@@ -227,6 +228,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
   if (scene.reorder_every > 0) out.set_reorders(reorder.count(), reorder.seconds());
   out.set_stepping_seconds(stepping);
+  out.set_cpu_seconds(checkpoints.earlier_cpu_seconds() + process_cpu_seconds());
   try {
     out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
   } catch (const OutputError& e) {

@@ -50,6 +50,12 @@ void check_same_state(const std::string& path_a, const std::string& path_b) {
   }
 }
 
+// The number after "key": in a summary.json text (NaN if the key is missing).
+double json_number(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\"" + key + "\": ");
+  return at == std::string::npos ? std::nan("") : std::stod(text.substr(at + key.size() + 4));
+}
+
 }  // namespace
 
 // The same with a real SIGKILL: a child rewrites the checkpoint in a loop and is killed at some
@@ -93,8 +99,18 @@ TEST_CASE("checkpoint: a restarted run ends bit-identical to the uninterrupted r
   const std::string full = dir / "full", half = dir / "half";
   REQUIRE(run_arksph("run " + scene + " --quiet --out " + full, log) == 0);
   REQUIRE(run_arksph("run " + scene + " --quiet --out " + half + " --set time.end=0.1", log) == 0);
-  CHECK(read_checkpoint(half + "/checkpoint.h5").time == 0.1);
+  Checkpoint first = read_checkpoint(half + "/checkpoint.h5");
+  CHECK(first.time == 0.1);
+  CHECK(first.cpu_seconds > 0);
+  // CPU time adds up over restarts: with the first segment's CPU time set to 10^4 s in its
+  // checkpoint (no test run takes that long), the second segment's checkpoint and summary report
+  // more than 10^4 s; a count that started again at 0 would not.
+  first.cpu_seconds = 1e4;
+  write_checkpoint(half + "/checkpoint.h5", first);
   REQUIRE(run_arksph("run --restart " + half + "/checkpoint.h5 --quiet --set time.end=0.2", log) == 0);
+  const double cpu_end = read_checkpoint(half + "/checkpoint.h5").cpu_seconds;
+  CHECK(cpu_end > 1e4);
+  CHECK(json_number(slurp(half + "/summary.json"), "cpu_seconds") >= cpu_end);
   check_same_state(full + "/checkpoint.h5", half + "/checkpoint.h5");
   CHECK(slurp(full + "/timeseries.csv") == slurp(half + "/timeseries.csv"));
   // The same entries; the run id comment differs (two runs).

@@ -1,5 +1,7 @@
 #include "distributed/halo_constrained_pressure.hpp"
 
+#include <tuple>
+
 #include "distributed/halo_density_correction.hpp"
 #include "projection/divergence_operator.hpp"
 #include "projection/ppe_assembly.hpp"
@@ -46,8 +48,11 @@ distributed_ppe::HypreSolveReport HaloConstrainedPressure::constrain(const doubl
       if (two_d) wy[a] -= by[a];
     }
   }
-  const std::vector<double> wx_all = poisson_.with_halo(wx);
-  const std::vector<double> wy_all = two_d ? poisson_.with_halo(wy) : std::vector<double>();
+  std::vector<double> wx_all, wy_all;
+  if (two_d)
+    std::tie(wx_all, wy_all) = poisson_.with_halo(wx, wy);  // one all-to-all for both components
+  else
+    wx_all = poisson_.with_halo(wx);
   // 2. D w - Q at every real point (only the rank's particles are used), the copies' velocities
   // those of the evaluator's state.
   const StateLayout& E = f_.evaluator().layout();

@@ -22,6 +22,15 @@ std::vector<double> HaloPoisson::with_halo(const std::vector<double>& own) const
   return all;
 }
 
+std::pair<std::vector<double>, std::vector<double>> HaloPoisson::with_halo(const std::vector<double>& a,
+                                                                         const std::vector<double>& b) const {
+  std::vector<std::vector<double>> copies = f_.halo_values(std::vector<const std::vector<double>*>{&a, &b});
+  std::pair<std::vector<double>, std::vector<double>> all(a, b);
+  all.first.insert(all.first.end(), copies[0].begin(), copies[0].end());
+  all.second.insert(all.second.end(), copies[1].begin(), copies[1].end());
+  return all;
+}
+
 double HaloPoisson::level(const std::vector<double>& p, bool zero_min) const {
   if (zero_min) {
     double lowest = std::numeric_limits<double>::infinity();

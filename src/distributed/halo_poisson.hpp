@@ -9,6 +9,7 @@
 // and starts hypre cold (a new hierarchy), as after a migration or a new deal.
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "distributed/halo_rhs.hpp"
@@ -32,6 +33,9 @@ class HaloPoisson {
   // Collective. The rank's values followed by their halo copies' (their owners' values): one value
   // for each real point of the evaluator.
   std::vector<double> with_halo(const std::vector<double>& own) const;
+  // The same for two fields in one all-to-all (the components of a vector).
+  std::pair<std::vector<double>, std::vector<double>> with_halo(const std::vector<double>& a,
+                                                                const std::vector<double>& b) const;
   void particles_moved();
   double assembly_seconds() const { return assembly_seconds_; }
 

@@ -127,15 +127,27 @@ void HaloRhs::set_slip_origin(bool on, double t0) {
 }
 
 std::vector<double> HaloRhs::halo_values(const std::vector<double>& own) const {
+  return std::move(halo_values(std::vector<const std::vector<double>*>{&own}).front());
+}
+
+std::vector<std::vector<double>> HaloRhs::halo_values(const std::vector<const std::vector<double>*>& own) const {
   const int dim = owned_.index().dim;
-  // Records of one field beyond the coordinates (update shifts the coordinates only).
-  parallel::ParticleFields from(dim, dim + 1), to(dim, dim + 1);
+  const int k = static_cast<int>(own.size());
+  // Records of the fields beyond the coordinates (update shifts the coordinates only).
+  parallel::ParticleFields from(dim, dim + k), to(dim, dim + k);
   from.id = owned_.fields().id;
-  from.field[static_cast<std::size_t>(dim)] = own;
-  from.field[static_cast<std::size_t>(dim)].resize(from.id.size(), 0.0);
+  std::vector<int> sent;
+  for (int i = 0; i < k; ++i) {
+    std::vector<double>& field = from.field[static_cast<std::size_t>(dim + i)];
+    field = *own[static_cast<std::size_t>(i)];
+    field.resize(from.id.size(), 0.0);
+    sent.push_back(dim + i);
+  }
   to.resize(halo_.size());
-  exchange_.update(comm_, from, {dim}, to);
-  return std::move(to.field[static_cast<std::size_t>(dim)]);
+  exchange_.update(comm_, from, sent, to);
+  std::vector<std::vector<double>> copies;
+  for (int i = 0; i < k; ++i) copies.push_back(std::move(to.field[static_cast<std::size_t>(dim + i)]));
+  return copies;
 }
 
 void HaloRhs::eval(double t, const double* y, double* ydot) {

@@ -6,12 +6,13 @@ usage: plot.py RUNS_DIR [OUT_DIR]      (OUT_DIR defaults to measured/ beside thi
 For every run folder of RUNS_DIR (resolution and scheme read from batch_run.txt):
 - results.csv: N, scheme, status, end time, the steady-state time (summary.json steady_state),
   steps, wall seconds (of the last launch only for a run continued from a checkpoint: column
-  resumed), and at the last output the Ghia r.m.s. and largest errors of u on x = 0.5 and of v on
+  resumed), CPU seconds (summary.json cpu_seconds: every launch of the run, all threads; empty
+  for runs made before arksph recorded it), and at the last output the Ghia r.m.s. and largest errors of u on x = 0.5 and of v on
   y = 0.5 and the density r.m.s. (Szewc eq. 56);
 - history.png: Ghia u r.m.s. and density r.m.s. against t, one panel per N (Szewc Fig. 12d);
 - profiles.png: u(y) on x = 0.5 and v(x) on y = 0.5 at Ghia's points at the last output, per N
   and scheme, against Ghia (Szewc Figs. 9, 16);
-- cost.png: wall time per scheme against N (Szewc Fig. 10); runs still going are left out.
+- cost.png: CPU time (wall time where not recorded) per scheme against N (Szewc Fig. 10); runs still going are left out.
 Runs still going (no summary.json) are reported from their timeseries.csv so far.
 """
 import csv

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Tables and figures of Szewc's steady-state resolution study (sweep.toml) from its batch folder.
 
-usage: plot.py RUNS_DIR [OUT_DIR]      (OUT_DIR defaults to measured/ beside this script)
+usage: plot.py RUNS_DIR[,RUNS_DIR...] [OUT_DIR]      (OUT_DIR defaults to measured/ beside this script)
 
-For every run folder of RUNS_DIR (resolution and scheme read from batch_run.txt):
+For every run folder of the RUNS_DIRs (batch folders, comma-separated) (resolution and scheme read from batch_run.txt):
 - results.csv: N, scheme, status, end time, the steady-state time (summary.json steady_state),
   steps, wall seconds (of the last launch only for a run continued from a checkpoint: column
   resumed), CPU seconds (summary.json cpu_seconds: every launch of the run, all threads; empty
@@ -27,7 +27,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-COLOUR = {"isph": "tab:blue", "isph+pw": "tab:green", "isph-gpps": "tab:orange", "wcsph": "tab:red"}
+COLOUR = {"isph": "tab:blue", "isph+pw": "tab:green", "isph+pw-newton": "tab:olive", "isph-gpps": "tab:orange",
+          "wcsph": "tab:red"}
 
 
 def read_rows(path):
@@ -43,9 +44,11 @@ def run_keys(folder):
                 k, v = a.split("=", 1)
                 keys[k] = v
     n = round(1.0 / float(keys["fluid.spacing"])) ** 2
-    scheme = keys["method.scheme"]
+    scheme = keys.get("method.scheme", "isph")  # the scene's scheme where the sweep does not set one
     if keys.get("method.density_correction", "none") != "none":
         scheme += "+pw"
+        if keys.get("method.correction_solver", "fixed_point") == "newton":  # the scene's is the fixed point
+            scheme += "-newton"
     return n, scheme
 
 
@@ -68,23 +71,23 @@ def measure(folder, resumed):
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
-    runs = sys.argv[1]
     out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(HERE, "measured")
     os.makedirs(out, exist_ok=True)
-    resumed = {}
-    if os.path.exists(os.path.join(runs, "batch.csv")):
-        for r in read_rows(os.path.join(runs, "batch.csv")):
-            resumed[r["run"]] = r.get("resumed", "0") == "1"
     rows, series = [], {}
-    for name in sorted(os.listdir(runs)):
-        folder = os.path.join(runs, name)
-        if not os.path.exists(os.path.join(folder, "batch_run.txt")):
-            continue
-        row, ts = measure(folder, resumed.get(name, False))
-        rows.append(row)
-        series[(row["N"], row["scheme"])] = (ts, folder)
+    for runs in sys.argv[1].split(","):
+        resumed = {}
+        if os.path.exists(os.path.join(runs, "batch.csv")):
+            for r in read_rows(os.path.join(runs, "batch.csv")):
+                resumed[r["run"]] = r.get("resumed", "0") == "1"
+        for name in sorted(os.listdir(runs)):
+            folder = os.path.join(runs, name)
+            if not os.path.exists(os.path.join(folder, "batch_run.txt")):
+                continue
+            row, ts = measure(folder, resumed.get(name, False))
+            rows.append(row)
+            series[(row["N"], row["scheme"])] = (ts, folder)
     if not rows:
-        sys.exit("no runs in " + runs)
+        sys.exit("no runs in " + sys.argv[1])
     with open(os.path.join(out, "results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()

@@ -11,7 +11,7 @@ For every run folder of the RUNS_DIRs (batch folders, comma-separated) (resoluti
   y = 0.5 and the density r.m.s. (Szewc eq. 56);
 - history.png: Ghia u r.m.s. and density r.m.s. against t, one panel per N (Szewc Fig. 12d);
 - profiles.png: u(y) on x = 0.5 and v(x) on y = 0.5 at Ghia's points at the last output, per N
-  and scheme, against Ghia (Szewc Figs. 9, 16);
+  and scheme, against Ghia (Szewc Figs. 9, 16), for the runs that have finished;
 - cost.png: CPU time (wall time where not recorded) per scheme against N (Szewc Fig. 10); runs still going are left out.
 Runs still going (no summary.json) are reported from their timeseries.csv so far.
 """
@@ -85,7 +85,7 @@ def main():
                 continue
             row, ts = measure(folder, resumed.get(name, False))
             rows.append(row)
-            series[(row["N"], row["scheme"])] = (ts, folder)
+            series[(row["N"], row["scheme"])] = (ts, folder, row["status"])
     if not rows:
         sys.exit("no runs in " + sys.argv[1])
     with open(os.path.join(out, "results.csv"), "w", newline="") as f:
@@ -97,7 +97,7 @@ def main():
     ns = sorted({r["N"] for r in rows})
     fig, ax = plt.subplots(2, len(ns), figsize=(4 * len(ns), 6), squeeze=False)
     for j, n in enumerate(ns):
-        for (nn, scheme), (ts, _) in sorted(series.items()):
+        for (nn, scheme), (ts, _, _) in sorted(series.items()):
             if nn != n or not ts:
                 continue
             t = [float(r["t"]) for r in ts]
@@ -114,8 +114,8 @@ def main():
     fig, ax = plt.subplots(2, len(ns), figsize=(4 * len(ns), 7), squeeze=False)
     for j, n in enumerate(ns):
         ghia_drawn = False
-        for (nn, scheme), (_, folder) in sorted(series.items()):
-            if nn != n:
+        for (nn, scheme), (_, folder, status) in sorted(series.items()):
+            if nn != n or status == "running":  # its ghia_*.csv is of an earlier launch's last frame
                 continue
             for i, (line, coord) in enumerate((("u", "y"), ("v", "x"))):
                 path = os.path.join(folder, f"ghia_{line}.csv")

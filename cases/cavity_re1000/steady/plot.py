@@ -115,7 +115,7 @@ def main():
     for j, n in enumerate(ns):
         ghia_drawn = False
         for (nn, scheme), (_, folder, status) in sorted(series.items()):
-            if nn != n or status == "running":  # its ghia_*.csv is of an earlier launch's last frame
+            if nn != n or status != "ok":  # a run still going or stopped early: not its final profile
                 continue
             for i, (line, coord) in enumerate((("u", "y"), ("v", "x"))):
                 path = os.path.join(folder, f"ghia_{line}.csv")

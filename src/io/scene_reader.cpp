@@ -282,6 +282,8 @@ bool left_automatic(const Section& sec, const std::string& name, const Param& p)
 // when it finds "auto" there, so their order does not matter.
 void resolve_automatic(Scene& s, const std::vector<const CatalogKey*>& automatic) {
   s.automatic.clear();
+  for (const CatalogKey* k : automatic)  // a key left out holds the struct's default until then
+    if (k->param.type != Param::Type::boolean) k->param.store(s, std::string("auto"));  // (a flag cannot)
   for (const CatalogKey* k : automatic) {
     const Param& p = k->param;
     const std::string value = p.automatic(s);

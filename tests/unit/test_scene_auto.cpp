@@ -76,6 +76,8 @@ TEST_CASE("auto: every key with a rule defaults to auto, and nothing is left at 
     CHECK(back.ppe_pressure_level == s.ppe_pressure_level);
     CHECK(back.correction_solver == s.correction_solver);
     CHECK(back.free_slip_divergence == s.free_slip_divergence);
+    CHECK(back.regularisation == s.regularisation);
+    CHECK(back.wall_velocity == s.wall_velocity);
   }
 }
 
@@ -177,4 +179,42 @@ TEST_CASE("auto: free-slip divergence images with walls under isph-gpps, and und
   CHECK(chosen(read(kWalled, {lid}), "boundary.free_slip_divergence") == "true");
   CHECK_FALSE(read(kWalled, {lid, "boundary.free_slip_divergence=false"}).free_slip_divergence);
   CHECK(read(kWalled, {lid, "boundary.free_slip_divergence=\"auto\""}).free_slip_divergence);
+}
+
+TEST_CASE("auto: the transport velocity and the quadratic wall velocity for isph with P-W in a walled flow") {
+  const std::string lid = "boundary.top={ kind = \"wall\", velocity = [1.0, 0.0] }";
+  const std::string pw = "method.density_correction=pozorski_wawrenczuk";
+  const std::string isph = "method.scheme=isph";
+  // The cavity (a moving lid) and the spin-down (walls at rest, an initial rotation).
+  for (const std::string& flow : {lid, std::string("initial.velocity=[\"y - 0.5\", \"0.5 - x\"]")}) {
+    CAPTURE(flow);
+    const Scene s = read(kWalled, {isph, pw, flow});
+    CHECK(s.regularisation == "transport_velocity");
+    CHECK(s.wall_velocity == "quadratic");
+    CHECK(chosen(s, "method.regularisation") == "transport_velocity");
+    CHECK(chosen(s, "boundary.wall_velocity") == "quadratic");
+    CHECK(read(s.resolved_toml).wall_velocity == "quadratic");
+  }
+  // Everything else keeps shifting and mirrored ghosts.
+  const std::vector<std::vector<std::string>> others = {
+      {isph, lid},                                         // no P-W correction
+      {isph, pw},                                          // a tank: no wall or initial speed
+      {"method.scheme=isph-gpps", pw, lid},                // the grid projection
+      {isph, pw, lid, "method.projection=constrained"},    // the pressure inside f
+      {"method.scheme=wcsph", lid},
+  };
+  for (const auto& sets : others) {
+    CAPTURE(sets.back());
+    const Scene s = read(kWalled, sets);
+    CHECK(s.regularisation == "shifting");
+    CHECK(s.wall_velocity == "mirror");
+  }
+  const Scene periodic = read(kPeriodic, {isph, pw, "initial.velocity=[\"sin(6.283185307179586*y)\", \"0\"]"});
+  CHECK(periodic.regularisation == "shifting");  // no wall
+  // Each rule yields to an explicit value of the other key, and to its own.
+  const Scene shifted = read(kWalled, {isph, pw, lid, "method.regularisation=shifting"});
+  CHECK(shifted.wall_velocity == "mirror");
+  const Scene linear = read(kWalled, {isph, pw, lid, "boundary.wall_velocity=linear"});
+  CHECK(linear.regularisation == "transport_velocity");
+  CHECK(linear.wall_velocity == "linear");
 }

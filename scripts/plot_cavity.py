@@ -6,8 +6,8 @@ the particles of each run's last frame coloured by speed.
 usage: plot_cavity.py OUT.png RUN_DIR [RUN_DIR ...]
 
 Each run folder needs ghia_u.csv, ghia_v.csv, summary.json and particles.pvd (a finished or
-stopped `arksph run` of a scene with metrics.ghia_re). The legend names each run by its scheme and
-N, with its Ghia r.m.s. errors of u and v and its end time. Needs matplotlib and numpy.
+stopped `arksph run` of a scene with metrics.ghia_re). The legend names each run by its scheme (with its
+regularisation and P-W correction) and N, with its Ghia r.m.s. errors of u and v and its end time. Needs matplotlib and numpy.
 """
 import csv
 import json
@@ -29,10 +29,21 @@ def columns(path):
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
+def method(s):
+    """The scheme with its regularisation and P-W correction, from summary.json's terms."""
+    parts = [s["scheme"]]
+    for term in s.get("terms", []):
+        if term.startswith("regularisation:"):
+            parts.append(term.split(":", 1)[1].replace("_", " "))
+        elif term.startswith("correction:"):
+            parts.append("P-W")
+    return " + ".join(parts)
+
+
 def label(run):
     s = json.load(open(os.path.join(run, "summary.json")))
     m = s.get("metrics", {})
-    return (f"{s['scheme']}, N = {s['particles']}, t = {s['final_time']:g}: "
+    return (f"{method(s)}, N = {s['particles']}, t = {s['final_time']:g}: "
             f"r.m.s. u {m.get('ghia_u_rms', float('nan')):.3f}, v {m.get('ghia_v_rms', float('nan')):.3f}")
 
 
@@ -53,7 +64,7 @@ def main():
         speed = (p["velocity"][:, :2] ** 2).sum(axis=1) ** 0.5
         sc = ax[2 + k].scatter(p["Points"][:, 0], p["Points"][:, 1], c=speed, s=2, cmap="viridis", vmin=0, vmax=1)
         ax[2 + k].set_aspect("equal")
-        scheme = json.load(open(os.path.join(run, "summary.json")))["scheme"]
+        scheme = method(json.load(open(os.path.join(run, "summary.json"))))
         ax[2 + k].set_title(f"{scheme}, particles at t = {t:g}", fontsize=9)
         fig.colorbar(sc, ax=ax[2 + k], fraction=0.046, label="|u|")
     ax[0].set_xlabel("u on x = 0.5")

@@ -66,7 +66,7 @@ bool corrected_walled_flow(const Scene& s) {
 // Where the P-W correction already holds the particles at the reference density in a walled flow,
 // Adami's transport velocity: it dissipates less than shifting and imposes no step limit. Cavity at
 // Re = 1000, 60 x 60, t = 60, with the quadratic wall velocity that comes with it: Ghia r.m.s.
-// 0.025 / 0.040 in 8,028 steps, against shifting's 0.055 / 0.077 in 42,600 (cases/cavity_re1000).
+// 0.026 / 0.038 in 8,041 steps, against shifting's 0.055 / 0.077 in 42,600 (cases/cavity_re1000).
 std::string automatic_regularisation(const Scene& s) {
   return corrected_walled_flow(s) ? "transport_velocity" : "shifting";
 }

@@ -4,7 +4,8 @@ OpenFOAM solution (bench/openfoam_cavity) and Ghia, Ghia & Shin 1982 (bench/ghia
 
 usage: compare.py RE RUNS_DIR OUT_DIR
 
-For every run folder in RUNS_DIR (model and correction read from its batch_run.txt):
+For every run folder in RUNS_DIR (model, correction and pressure reduction read from its
+batch_run.txt; a run without the reduction is labelled "<model> (no p_avg)"):
 - kinetic energy KE(t) from timeseries.csv against OpenFOAM's, at OpenFOAM's times (every 0.1)
   up to the run's last row: the r.m.s. and largest |KE - KE_FOAM| over those times, and the
   relative difference at the end, all divided by OpenFOAM's KE at the end time;
@@ -35,7 +36,8 @@ FOAM = os.path.join(ROOT, "bench", "openfoam_cavity")
 GHIA = os.path.join(ROOT, "bench", "ghia")
 LETTER = {"direct": "A", "two_pass": "B", "violeau": "C", "cleary": "D", "morris": "E"}
 CORRECTIONS = ["none", "shepard", "bonet_lok"]
-COLOUR = {"A": "tab:blue", "B": "tab:orange", "C": "tab:green", "D": "tab:red", "E": "tab:purple"}
+COLOUR = {"A": "tab:blue", "B": "tab:orange", "C": "tab:green", "D": "tab:red", "E": "tab:purple",
+          "E (no p_avg)": "tab:brown"}
 END = {100: 20.0, 1000: 80.0}
 SPACING = 0.02  # 50 x 50 particles
 INTERP_H = 1.3 * SPACING  # arksph's centreline interpolation (src/diagnostics/ghia.cpp)
@@ -68,12 +70,15 @@ def run_keys(folder):
         if "=" in a:
             k, v = a.split("=", 1)
             keys[k] = v
-    return keys["method.viscosity_model"], keys["method.kernel_correction"]
+    # A run without Basa's pressure reduction (the scene's default) is labelled apart: "E (no p_avg)".
+    reduced = keys.get("method.pressure_reduction", "true") == "true"
+    return keys["method.viscosity_model"], keys["method.kernel_correction"], reduced
 
 
 def measure(re, folder):
-    model, corr = run_keys(folder)
-    row = dict(model=LETTER.get(model, model), viscosity_model=model, correction=corr)
+    model, corr, reduced = run_keys(folder)
+    letter = LETTER.get(model, model) + ("" if reduced else " (no p_avg)")
+    row = dict(model=letter, viscosity_model=model, correction=corr)
     ts = read_rows(os.path.join(folder, "timeseries.csv")) if os.path.exists(os.path.join(folder, "timeseries.csv")) else []
     summary_path = os.path.join(folder, "summary.json")
     summary = json.load(open(summary_path)) if os.path.exists(summary_path) else {}

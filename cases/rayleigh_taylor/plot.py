@@ -7,7 +7,10 @@ Writes into OUT_DIR:
   rt_particles.png  particles coloured by phase at t = 1, 3, 5 (rows), one column per run, with the
                     0.5 contour of the smoothed phase indicator (interface_NNNNNN.csv) on top, and
                     in green the OpenFOAM interface of bench/openfoam_rt (200 x 400) at t = 1, 3, 5;
-  rt_tips.png       bubble and spike tip heights (timeseries.csv) against time.
+  rt_tips.png       bubble and spike tip heights (timeseries.csv) against time;
+  rt_density.png    mean and r.m.s. of the heavy (upper) phase's density over its initial density
+                    against time (timeseries.csv upper_density_mean, upper_density_rms: Szewc eqs.
+                    55-56), Szewc et al. 2012 Fig. 14.
 Reads the VTP frames directly (scripts/vtp_frames.py).
 """
 import csv
@@ -81,6 +84,22 @@ def main():
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(out / "rt_tips.png", dpi=150)
+
+    fig, (ax_mean, ax_rms) = plt.subplots(1, 2, figsize=(10, 4))
+    for label, run in runs:
+        with open(Path(run) / "timeseries.csv") as f:
+            rows = list(csv.DictReader(f))
+        t = [float(r["t"]) for r in rows]
+        ax_mean.plot(t, [float(r["upper_density_mean"]) for r in rows], label=label)
+        ax_rms.plot(t, [100.0 * float(r["upper_density_rms"]) for r in rows], label=label)
+    ax_mean.set_ylabel("upper phase: mean density / rho0 (1.8 at t = 0)")
+    ax_rms.set_ylabel("upper phase: density r.m.s. (%)")
+    for ax in (ax_mean, ax_rms):
+        ax.set_xlabel("t / sqrt(L/g)")
+        ax.grid(alpha=0.3)
+    ax_rms.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "rt_density.png", dpi=150)
 
 
 if __name__ == "__main__":

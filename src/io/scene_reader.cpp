@@ -1,4 +1,5 @@
-// Scene reader: parse the TOML text, apply the --set overrides to the tree, read every key of the
+// Scene reader: parse the TOML text, apply the --set overrides to the tree, then the keys of the
+// scene's scheme ([for_scheme.<scheme>], io/scheme_tables.hpp), read every key of the
 // scene catalog (io/scene_catalog.hpp) by its declared type, range and choices, then the box, the
 // sides and the phases, and check the combinations that no single key can.
 #include "io/scene_reader.hpp"
@@ -22,6 +23,7 @@
 #include "io/scene_catalog.hpp"
 #include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
+#include "io/scheme_tables.hpp"
 
 namespace arksph {
 
@@ -335,8 +337,15 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
   toml::table tree = parse_document(toml_text, source_name);
   std::vector<std::pair<std::string, std::string>> overrides;
   for (const auto& set : sets) overrides.push_back(apply_override(tree, set));
-  const Reporter rep(source_name, overrides, &warnings);
-  const Section root(rep, &tree, "", scene_tables());
+  // A problem with a key names where it came from: --set options last (they win), then the table
+  // of the scene's scheme, else the file.
+  std::vector<std::pair<std::string, std::string>> origins =
+      apply_scheme_tables(Reporter(source_name, overrides, &warnings), tree, overrides);
+  origins.insert(origins.end(), overrides.begin(), overrides.end());
+  const Reporter rep(source_name, origins, &warnings);
+  std::vector<std::string> top = scene_tables();
+  top.push_back("for_scheme");  // gone from the tree by now; named in the message for an unknown table
+  const Section root(rep, &tree, "", top);
   std::map<std::string, Section> sections;  // every table but [[phase]], unknown keys rejected here
   for (const std::string& table : scene_tables())
     if (table != "phase") sections.emplace(table, root.section(table, keys_of_table(table)));

@@ -80,7 +80,9 @@ std::string scene_reference_markdown() {
     << "Every key of a scene file, generated from the parameters that the code declares "
        "(`arksph scene-reference` prints this page; a test fails when the committed copy is stale).\n"
     << "Keys are dotted paths: `[method]` + `kernel = ...` is `method.kernel`, which `--set method.kernel=...` "
-       "overrides. \"Declared by\" names the family or part that reads the key.\n";
+       "overrides. \"Declared by\" names the family or part that reads the key.\n"
+    << "A key of any table but `[scene]` and `[[phase]]` may also sit in `[for_scheme.<scheme>.<table>]`, where it takes effect "
+       "only when `method.scheme` is `<scheme>` ([user-guide.md](user-guide.md), \"Keys for one scheme\").\n";
   for (const std::string& table : scene_tables()) {
     o << "\n## [" << (table == "phase" ? "[phase]" : table) << "]\n\n"
       << "| key | type | default | admissible | unit | description | declared by |\n"

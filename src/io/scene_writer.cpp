@@ -125,6 +125,11 @@ std::string write(const Scene& s, bool comments) {
       o << "\n";
     }
   }
+  if (comments)
+    o << "\n# Keys for one scheme only (docs/user-guide.md, 'Keys for one scheme'): they take effect when method.scheme is that\n"
+         "# scheme, and --set still wins, e.g.\n"
+         "# [for_scheme.wcsph.method]\n"
+         "# regularisation = 'none'\n";
   return o.str();
 }
 

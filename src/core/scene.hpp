@@ -110,6 +110,7 @@ struct Scene {
   double cfl = 0.25;      // coefficient of Szewc eqs. 34-35
   double rtol = 1e-2, atol = 1e-4;  // adaptive mode only: loose, so that the stability limits govern
   long max_steps = 100000000;
+  double blowup_speed = 0.0;  // a particle faster than this stops the run (run/state_check.hpp); 0: automatic
   bool imex = false;                     // ARKStep IMEX: viscous term implicit (Newton, KLU), the rest explicit
   std::string imex_pair = "ARK324L2SA";  // time.imex: ARKODE additive pair (arksph list: imex_pair)
   bool imex_linear = false;              // time.imex: true: ARKStepSetLinear, J re-probed at every stage, one Newton iteration

@@ -43,6 +43,12 @@ const std::vector<Param>& time_params() {
           .doc("relative tolerance (adaptive mode; loose, so that the stability limits govern)").to(&Scene::rtol),
       number("time.atol", 1e-4).in(above(0)).doc("absolute tolerance (adaptive mode)").to(&Scene::atol),
       integer("time.max_steps", 100000000).in(at_least(1)).doc("abort after this many steps").to(&Scene::max_steps),
+      // Read by the state check after every step (run/state_check.cpp).
+      number("time.blowup_speed", 0.0).in(at_least(0)).unit("m/s")
+          .doc("a particle faster than this has blown up: the run stops with exit 3, keeping its output (0: 100 times "
+               "the scene's largest speed scale: the sound speed of wcsph, wall and initial speeds, 10 sqrt(a L) with a "
+               "the largest acceleration at the start and L the domain's width)")
+          .to(&Scene::blowup_speed),
   };
   return params;
 }

@@ -14,15 +14,15 @@ StateChecker::StateChecker(const Scene& scene, const Model& model)
 
 StateChecker::StateChecker(const Scene& scene, const Model& model, double max_acceleration)
     : scene_(scene), model_(model) {
-  // Bound on the speed: 100 x the largest physical speed scale of the scene (sound speed for wcsph,
-  // wall speeds, initial speeds, sqrt(|f| L)); a run beyond it has blown up.
+  // Bound on the speed: time.blowup_speed, or 100 x the largest physical speed scale of the scene
+  // (sound speed for wcsph, wall speeds, initial speeds, sqrt(|f| L)); a run beyond it has blown up.
   double u_ref = model.sound_speed;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
   for (int k = 0; k < scene.dimension; ++k)
     for (double u : model.particles.init_vel[k]) u_ref = std::max(u_ref, std::abs(u));
   u_ref = std::max(u_ref, 10.0 * std::sqrt(max_acceleration * (scene.max[0] - scene.min[0])));
-  speed_limit_ = 100.0 * std::max(u_ref, 1e-6);
+  speed_limit_ = scene.blowup_speed > 0 ? scene.blowup_speed : 100.0 * std::max(u_ref, 1e-6);
   margin_ = model.rhs->kernel().radius();
 }
 
@@ -47,7 +47,8 @@ void StateChecker::check(double t, const double* y, const StateLayout& L, const 
         fail(a, std::string("escaped through a wall (") + "xy"[k] + " = " + std::to_string(x) + ")");
     }
     if (std::sqrt(s2) > speed_limit_)
-      fail(a, "speed " + std::to_string(std::sqrt(s2)) + " exceeds the blow-up bound " + std::to_string(speed_limit_));
+      fail(a, "speed " + std::to_string(std::sqrt(s2)) + " exceeds the blow-up bound " + std::to_string(speed_limit_) +
+                  (scene_.blowup_speed > 0 ? " (time.blowup_speed)" : ""));
     if (L.has_density) {
       const double rho = y[L.rho() + a];
       if (!std::isfinite(rho) || rho <= 0) fail(a, "density " + std::to_string(rho) + " is not positive and finite");

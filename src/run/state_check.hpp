@@ -1,5 +1,6 @@
-// Checks the state after every step: NaN/Inf, blow-up (speed beyond a bound) and particles escaping
-// through a wall. Throws NumericalFailure naming the time, the particle id and the quantity.
+// Checks the state after every step: NaN/Inf, blow-up (speed beyond time.blowup_speed, or by default
+// 100 times the scene's largest speed scale) and particles escaping through a wall. Throws
+// NumericalFailure naming the time, the particle id and the quantity.
 #pragma once
 #include <cstdint>
 #include <string>

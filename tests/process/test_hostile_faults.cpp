@@ -1,7 +1,8 @@
 // Faults that arise while a run goes: a NaN or infinity in the right-hand side or in a restarted
 // state (exit 3 naming the time, the particle id and the quantity), an adaptive step that underflows
-// (exit 3), and signals: SIGHUP and SIGQUIT stop a run like SIGTERM (checkpoint, summary.json,
-// 128 + signal); a signal during set-up stops it there (128 + signal, no checkpoint).
+// (exit 3), a speed past time.blowup_speed (exit 3), and signals: SIGHUP and SIGQUIT stop a run like
+// SIGTERM (checkpoint, summary.json, 128 + signal); a signal during set-up stops it there
+// (128 + signal, no checkpoint).
 // ARKSPH_TEST_BINARY runs these against another build (cli_outcome.hpp).
 #include <doctest/doctest.h>
 
@@ -185,4 +186,35 @@ TEST_CASE("hostile runs: a signal during set-up stops the run there with 128 + s
     CHECK(said.find("no checkpoint") != std::string::npos);
     CHECK(!fs::exists(out + "/checkpoint.h5"));
   }
+}
+
+// time.blowup_speed sets the speed at which a run counts as blown up. A periodic box under a uniform
+// body force g = 10 has no pressure gradient: every particle moves at u = g t, so a bound of 5 is
+// crossed at t = 0.5 by the step that ends there or just after (the acceleration's step limit
+// 0.25 sqrt(h / g) = 0.029), while the same run without the key (bound 100 x max(c, 10 sqrt(g L)))
+// reaches its end.
+TEST_CASE("hostile runs: time.blowup_speed stops a run whose particles pass it") {
+  ScratchDir dir("blowup_speed");
+  const std::string scene = dir / "S.toml", out = dir / "out";
+  std::ofstream(scene) << kScene << R"(
+[boundary]
+left = { kind = "periodic" }
+right = { kind = "periodic" }
+bottom = { kind = "periodic" }
+top = { kind = "periodic" }
+)";
+  auto run = [&](const std::string& args) {
+    return run_cli("run " + scene + " --quiet --out " + out + " --set time.end=0.7 --set 'fluid.body_force=[\"10\", \"0\"]' " +
+                   args);
+  };
+  CHECK(run("").code == 0);
+  const CliOutcome o = run("--set time.blowup_speed=5");
+  check_diagnosed(o, "", "exceeds the blow-up bound 5.000000 (time.blowup_speed)");
+  // "t = T, particle id N: speed S exceeds ...": the first step past u = 5 ends in [0.5, 0.53].
+  const double t = std::stod(o.err.substr(o.err.find("t = ") + 4));
+  const double speed = std::stod(o.err.substr(o.err.find("speed ") + 6));
+  CHECK(t >= 0.5);
+  CHECK(t <= 0.53);
+  CHECK(speed == doctest::Approx(10 * t).epsilon(1e-6));  // u = g t: no pressure gradient in the periodic box
+  CHECK(run("--set time.blowup_speed=-1").code == 2);
 }

@@ -13,7 +13,10 @@ batch_run.txt; a run without the reduction is labelled "<model> (no p_avg)"):
   ghia_v.csv: arksph's values at Ghia's 15 interior points of each line): r.m.s. difference from
   Ghia (arksph's own ghia_*_rms) and from OpenFOAM's 200^2 profile interpolated linearly to Ghia's
   points;
-- wall time and status from summary.json.
+- wall time and status from summary.json;
+- bursts: the first output time at which KE exceeds BURST_KE (0.06, about 1.4 times OpenFOAM's
+  KE at Re = 1000 and 3.4 times at Re = 100, above anything a run near the solution reaches), the
+  largest KE with its time, and the largest particle speed of the outputs.
 Writes OUT_DIR/re<RE>_results.csv, ke_re<RE>.png, centrelines_re<RE>.png (profiles from the
 last frame, interpolated as arksph interpolates for Ghia: Shepard-normalised Wendland C2 at
 h = 1.3 dx over the fluid particles) and particles_re<RE>.png (the last frames, coloured by speed).
@@ -75,6 +78,9 @@ def run_keys(folder):
     return keys["method.viscosity_model"], keys["method.kernel_correction"], reduced
 
 
+BURST_KE = 0.06  # a burst: KE above this (docstring)
+
+
 def measure(re, folder):
     model, corr, reduced = run_keys(folder)
     letter = LETTER.get(model, model) + ("" if reduced else " (no p_avg)")
@@ -99,6 +105,12 @@ def measure(re, folder):
     row["ke_end_rel_err"] = (ke_sph[-1] - interpolate(t_foam, ke_foam, t_sph[-1])) / ke_end_foam if ke_sph else float("nan")
     row["ke_rms_rel"] = (sum(d * d for d in diffs) / len(diffs)) ** 0.5 / ke_end_foam if diffs else float("nan")
     row["ke_max_rel"] = max(abs(d) for d in diffs) / ke_end_foam if diffs else float("nan")
+    above = [t for t, ke in zip(t_sph, ke_sph) if ke > BURST_KE]
+    row["first_ke_above_burst_t"] = above[0] if above else float("nan")
+    finite = [(ke, t) for t, ke in zip(t_sph, ke_sph) if math.isfinite(ke)]
+    row["ke_largest"], row["ke_largest_t"] = max(finite) if finite else (float("nan"), float("nan"))
+    speeds = [float(r["max_speed"]) for r in ts if math.isfinite(float(r["max_speed"]))]
+    row["speed_largest"] = max(speeds) if speeds else float("nan")
     for line, coord in (("u", "y"), ("v", "x")):
         path = os.path.join(folder, f"ghia_{line}.csv")
         if not os.path.exists(path) or row["status"] != "ok":
@@ -240,7 +252,7 @@ def plot_centrelines(re, profiles, out):
 
 FIELDS = ["model", "viscosity_model", "correction", "status", "final_time", "ke_end", "ke_end_rel_err", "ke_rms_rel",
           "ke_max_rel", "u_rms_foam", "v_rms_foam", "u_rms_ghia", "v_rms_ghia", "steps", "wall_reflections",
-          "wall_seconds"]
+          "wall_seconds", "first_ke_above_burst_t", "ke_largest", "ke_largest_t", "speed_largest"]
 
 
 def main():
@@ -269,12 +281,14 @@ def main():
     if frames:
         plot_particles(re, frames, os.path.join(out, f"particles_re{re}.png"))
     print("| model | correction | status (t reached) | KE end rel. err | KE r.m.s. / max | u r.m.s. FOAM / Ghia "
-          "| v r.m.s. FOAM / Ghia | reflections | wall s |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| v r.m.s. FOAM / Ghia | reflections | first KE > 0.06 (t) | largest KE (t), largest speed | wall s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['model']} | {r['correction']} | {r['status']} ({r['final_time']:.4g}) | {r['ke_end_rel_err']:+.3f} "
               f"| {r['ke_rms_rel']:.3f} / {r['ke_max_rel']:.3g} | {r['u_rms_foam']:.4f} / {r['u_rms_ghia']:.4f} "
               f"| {r['v_rms_foam']:.4f} / {r['v_rms_ghia']:.4f} | {r['wall_reflections']} "
+              f"| {'never' if math.isnan(r['first_ke_above_burst_t']) else format(r['first_ke_above_burst_t'], '.3g')} "
+              f"| {r['ke_largest']:.3g} ({r['ke_largest_t']:.3g}), {r['speed_largest']:.3g} "
               f"| {r['wall_seconds']:.0f} |")
 
 

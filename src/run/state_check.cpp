@@ -15,7 +15,8 @@ StateChecker::StateChecker(const Scene& scene, const Model& model)
 StateChecker::StateChecker(const Scene& scene, const Model& model, double max_acceleration)
     : scene_(scene), model_(model) {
   // Bound on the speed: time.blowup_speed, or 100 x the largest physical speed scale of the scene
-  // (sound speed for wcsph, wall speeds, initial speeds, sqrt(|f| L)); a run beyond it has blown up.
+  // (sound speed for wcsph, wall speeds, initial speeds, 10 sqrt(a L) with a the largest acceleration
+  // at the start); a run beyond it has blown up.
   double u_ref = model.sound_speed;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));

@@ -50,6 +50,20 @@ struct SplitSum {
   double total() const { return s[0] + s[1]; }
 };
 
+// Four-way split sums, for a sum with few operations per pair: pair k adds into s[k % 4], and the
+// total is (s0 + s2) + (s1 + s3). Four is one AVX vector where the build has AVX (two SSE2 vectors
+// otherwise); the arithmetic of each lane is that of the one-pair form, so the bits are the same.
+using Four = double __attribute__((vector_size(32)));
+inline Four load_four(const double* p) {
+  Four t;
+  std::memcpy(&t, p, sizeof t);
+  return t;
+}
+struct Quad {
+  Four s{0.0, 0.0, 0.0, 0.0};
+  double total() const { return (s[0] + s[2]) + (s[1] + s[3]); }
+};
+
 // visit(Lane<(k - begin) % 2>{}, k) for k = begin .. end - 1, unrolled by two: the one place where
 // the lanes are assigned for a stored row (Neighborhood, PairList).
 template <class Visit>

@@ -5,8 +5,9 @@ Runs build/arksph on scene.toml over Reynolds numbers x models A-E x kernel corr
 {none, shepard, bonet_lok} x equations of state {tait, ideal_gas}. A run fails when the error eps
 of Basa eq. 38 (column poiseuille_eps of timeseries.csv) reaches 12 % at t* >= 0.5 (see TSTAR_JUDGE);
 t* at failure is eq. 39.
-A run stops at steady state (t* = 27.6, U(0,t)/U0 > 1 - 1e-12), at the step cap, or when arksph
-itself stops on a blow-up (exit 3). Results go to OUT/results.csv, one row per run, written as each
+A run stops at steady state (t* = 27.6, U(0,t)/U0 > 1 - 1e-12), at the step cap, when arksph
+itself stops on a blow-up (exit 3), or at its failure (stopped by the driver; the Re = 0.5 runs,
+whose eps series are kept, go on to the end). Results go to OUT/results.csv, one row per run, written as each
 run ends; a rerun skips the rows already there (resumable). The eps(t*) series of Re = 0.5 go to
 OUT/eps_re0.5.csv. OUT/robustness.png and OUT/eps_re0.5.png are drawn from the CSVs.
 
@@ -26,6 +27,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -41,12 +43,33 @@ EPS_FAIL = 0.12
 # 0.05 by t* = 2). Failure is therefore judged from t* = TSTAR_JUDGE on; a run already wrong then
 # (uncorrected model A: eps = 0.67 at t* = 0.5) fails at TSTAR_JUDGE.
 TSTAR_JUDGE = 0.5
+POLL_SECONDS = 0.5  # how often a running run's timeseries.csv is read for a failure
 FIELDS = ["model", "letter", "correction", "eos", "re", "status", "tstar_fail", "tstar_reached",
           "eps_last", "steps", "wall_s"]
 
 
 def tstar_to_t(ts):
     return ts * 4 * D * D / (math.pi ** 2 * NU)
+
+
+def read_series(ts_path):
+    """[(t*, eps, steps)] of a run's timeseries.csv so far (a half-written last line is skipped)."""
+    series = []
+    if os.path.exists(ts_path):
+        with open(ts_path) as fh:
+            for row in csv.DictReader(fh):
+                try:
+                    ts, eps, steps = float(row["tstar"]), float(row["poiseuille_eps"]), int(float(row["steps"]))
+                except (KeyError, ValueError, TypeError):
+                    continue
+                if math.isfinite(ts) and ts > 0:
+                    series.append((ts, eps, steps))
+    return series
+
+
+def failure(series):
+    """t* at which eps first reaches EPS_FAIL (NaN counts) from TSTAR_JUDGE on, or None."""
+    return next((ts for ts, eps, _ in series if ts >= TSTAR_JUDGE - 1e-9 and not (eps < EPS_FAIL)), None)
 
 
 def run_one(binary, out_dir, letter, model, corr, eos, re, max_steps, keep_series):
@@ -68,28 +91,29 @@ def run_one(binary, out_dir, letter, model, corr, eos, re, max_steps, keep_serie
     for k, v in sets.items():
         cmd += ["--set", f"{k}={v}"]
     env = dict(os.environ, OMP_NUM_THREADS="1")
-    t0 = time.time()
-    proc = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
-    wall = time.time() - t0
-    series = []
     ts_path = os.path.join(run_dir, "timeseries.csv")
-    if os.path.exists(ts_path):
-        with open(ts_path) as fh:
-            for row in csv.DictReader(fh):
-                try:
-                    ts, eps, steps = float(row["tstar"]), float(row["poiseuille_eps"]), int(float(row["steps"]))
-                except (KeyError, ValueError):
-                    continue
-                if math.isfinite(ts) and ts > 0:
-                    series.append((ts, eps, steps))
-    fail = next((ts for ts, eps, _ in series if ts >= TSTAR_JUDGE - 1e-9 and not (eps < EPS_FAIL)), None)  # NaN fails
+    t0 = time.time()
+    with tempfile.TemporaryFile("w+") as err:
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=err, text=True, env=env)
+        # A run that has failed is stopped there (SIGTERM: arksph keeps what it wrote), unless its
+        # whole series is wanted: past failure it only costs steps, which at high Re are many.
+        while proc.poll() is None:
+            time.sleep(POLL_SECONDS)
+            if not keep_series and failure(read_series(ts_path)) is not None:
+                proc.terminate()
+                proc.wait()
+        err.seek(0)
+        stderr = err.read()
+    wall = time.time() - t0
+    series = read_series(ts_path)
+    fail = failure(series)
     reached = series[-1][0] if series else 0.0
     steps = series[-1][2] if series else 0
     if fail is not None:
         status = "failed"
     elif proc.returncode == 0:
         status = "steady"
-    elif "max_steps" in proc.stderr:
+    elif "max_steps" in stderr:
         status = "capped"
     else:  # arksph stopped on a blow-up before eps was sampled above the threshold
         status, fail = "failed", reached

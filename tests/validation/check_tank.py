@@ -1,9 +1,12 @@
 #!/usr/bin/python3
 """Runs cases/hydrostatic_tank with one scheme and checks that the tank stays at rest.
 
-usage: check_tank.py ARKSPH OUTDIR SCHEME [--set KEY=VALUE ...]
+usage: check_tank.py ARKSPH OUTDIR SCHEME [--pressure-bound B] [--set KEY=VALUE ...]
 Bounds (sqrt(g H) = 1): max speed <= 1e-3 at the last output and <= 2e-3 at every output; r.m.s.
-relative deviation of the last frame's pressure from rho g (H - y) (both at zero mean) <= 1e-2.
+relative deviation of the last frame's pressure from rho g (H - y) (both at zero mean) <= B, 1e-2
+unless given. WCSPH's pressure is that of a weakly compressible fluid: its deviation falls with the
+sound speed c as about 1/c^2 (2.2e-2, 6.0e-3, 2.1e-3 at c = 10, 20, 40, H = g = 1), so its tests
+give B for their c.
 Exit 0 when every bound holds, 1 otherwise.
 """
 import subprocess
@@ -21,6 +24,9 @@ def main():
         print(__doc__)
         return 2
     binary, out, scheme, extra = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+    pressure_bound = 1e-2
+    if extra[:1] == ["--pressure-bound"] and len(extra) >= 2:
+        pressure_bound, extra = float(extra[1]), extra[2:]
     run = subprocess.run([binary, "run", str(CASE / "scene.toml"), "--quiet", "--out", out,
                           "--set", "method.scheme=" + scheme] + extra)
     if run.returncode != 0:
@@ -34,7 +40,7 @@ def main():
     dev = (p - p.mean()) - (ref - ref.mean())
     rel = float(np.sqrt(np.mean(dev ** 2) / np.mean((ref - ref.mean()) ** 2)))
     checks = [("max speed at t = %g" % t[-1], s[-1], 1e-3), ("max speed over the outputs", s.max(), 2e-3),
-              ("pressure r.m.s. relative deviation", rel, 1e-2)]
+              ("pressure r.m.s. relative deviation", rel, pressure_bound)]
     ok = True
     for name, value, bound in checks:
         passed = value <= bound

@@ -53,12 +53,10 @@ struct SplitSum {
 // Four-way split sums, for a sum with few operations per pair: pair k adds into s[k % 4], and the
 // total is (s0 + s2) + (s1 + s3). Four is one AVX vector where the build has AVX (two SSE2 vectors
 // otherwise); the arithmetic of each lane is that of the one-pair form, so the bits are the same.
+// No function takes or returns a Four by value: without AVX that would change the calling convention
+// (GCC's -Wpsabi), so values are loaded in place (load_four(p, t)).
 using Four = double __attribute__((vector_size(32)));
-inline Four load_four(const double* p) {
-  Four t;
-  std::memcpy(&t, p, sizeof t);
-  return t;
-}
+inline void load_four(const double* p, Four& t) { std::memcpy(&t, p, sizeof t); }
 struct Quad {
   Four s{0.0, 0.0, 0.0, 0.0};
   double total() const { return (s[0] + s[2]) + (s[1] + s[3]); }

@@ -124,9 +124,18 @@ class Shifting final : public ParticleTerm<Shifting> {
     const double *px = nb.rx.data(), *py = nb.ry.data(), *pw = nb.w.data(), *pf = nb.f.data();
     std::size_t k = 0;
     for (; k + 3 < nb.count; k += 4) {
-      const Four rx = load_four(px + k), ry = load_four(py + k), F = load_four(pf + k);
+      Four rx, ry, F;
+      load_four(px + k, rx);
+      load_four(py + k, ry);
+      load_four(pf + k, F);
       Four weight = F;
-      if constexpr (kClump) weight = clump_weight<kClump>(load_four(pw + k), F);
+      if constexpr (kClump) {  // clump_weight's operations, four lanes at once
+        Four w;
+        load_four(pw + k, w);
+        const Four q = clump_scale_ * w;
+        const Four q2 = q * q;
+        weight = (1.0 + q2 * q2) * F;
+      }
       sx.s += weight * rx;
       sy.s += weight * ry;
     }
@@ -151,11 +160,11 @@ class Shifting final : public ParticleTerm<Shifting> {
   }
   // (1 + R (W_ab / W(dx))^n) F_ab with n = 4 (Lind eq. 10), or F_ab without the anti-clumping weight;
   // grad_a W_ab = F_ab r_ab.
-  template <bool kClump, class T>
-  T clump_weight(T w, T F) const {
+  template <bool kClump>
+  double clump_weight(double w, double F) const {
     if constexpr (kClump) {
-      const T q = clump_scale_ * w;
-      const T q2 = q * q;
+      const double q = clump_scale_ * w;
+      const double q2 = q * q;
       return (1.0 + q2 * q2) * F;
     } else {
       return F;

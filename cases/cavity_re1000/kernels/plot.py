@@ -2,6 +2,7 @@
 """Szewc's kernel and smoothing-length studies of the Re = 1000 cavity at N = 3600 (Figs. 5-8, 12a-b).
 
 usage: plot.py WENDLAND_RUNS KERNEL_RUNS SMOOTHING_RUNS [OUT_DIR]
+       plot.py --support SUPPORT_RUNS [OUT_DIR]
 
     /usr/bin/python3 cases/cavity_re1000/kernels/plot.py runs/cavity_re1000_wendland_t120 \\
         runs/cavity_re1000_kernels runs/cavity_re1000_smoothing_length
@@ -18,6 +19,9 @@ from its timeseries.csv so far. Writes to OUT_DIR (default measured/ beside this
 - nn_histogram.png: nearest-neighbour distance histograms per kernel, one panel per scheme
   (Szewc Fig. 7);
 - density.png: density mean and r.m.s. against t per kernel and per h/dx for WCSPH (Fig. 12a-b).
+With --support, the runs of support.toml (Morris's and Wendland's kernels at equal support radii):
+support.csv, with results.csv's columns, and support.png, their nearest-neighbour histograms and u
+profiles.
 """
 import csv
 import json
@@ -116,11 +120,68 @@ def profile_figure(runs, label_of, title, path):
     fig.savefig(path, dpi=110)
 
 
+def support_figure(runs, path):
+    """Nearest-neighbour histograms and u on x = 0.5 of each run, labelled kernel and support radius."""
+    def label(r):
+        radius = r["h"] * (3 if r["kernel"] == "quintic_spline" else 2)
+        return f"{r['kernel']}, h/dx = {r['h']:.3g}, support {radius:.3g} dx"
+    schemes = [s for s in SCHEMES if any(r["scheme"] == s for r in runs)]
+    fig, ax = plt.subplots(2, len(schemes), figsize=(5 * len(schemes), 7), squeeze=False)
+    for j, scheme in enumerate(schemes):
+        mine = sorted((r for r in runs if r["scheme"] == scheme), key=label)
+        for k, run in enumerate(mine):
+            _, hist = close_pairs(run["folder"])
+            if hist:
+                total = sum(int(r["count"]) for r in hist)
+                ax[0][j].step([float(r["r_over_dx_lo"]) for r in hist], [int(r["count"]) / total for r in hist],
+                              where="post", color=f"C{k}", label=label(run))
+        for k, run in enumerate(mine):
+            g = sorted(read_rows(os.path.join(run["folder"], "ghia_u.csv")), key=lambda r: float(r["y"]))
+            if k == 0:
+                ax[1][j].plot([float(r["y"]) for r in g], [float(r["u_ghia"]) for r in g], "ko", ms=3, label="Ghia")
+            ax[1][j].plot([float(r["y"]) for r in g], [float(r["u_sph"]) for r in g], "-", color=f"C{k}", label=label(run))
+        ax[0][j].set_title(scheme)
+        ax[0][j].set_xlabel("nearest-neighbour distance / dx")
+        ax[1][j].set_xlabel("y (u on x = 0.5)")
+        ax[0][j].legend(fontsize=6)
+        ax[1][j].legend(fontsize=6)
+    ax[0][0].set_ylabel("share of particles")
+    fig.suptitle("Cavity Re = 1000, N = 3600: Morris's and Wendland's kernels at equal support radii")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def write_rows(rows, path):
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
+    for r in rows:
+        print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in r.items()))
+
+
+def support_study(folder, out):
+    runs = runs_of(folder, "support")
+    if not runs:
+        sys.exit(f"plot.py: no runs in {folder}")
+    write_rows([measure(run, "support")[0] for run in runs], os.path.join(out, "support.csv"))
+    support_figure(runs, os.path.join(out, "support.png"))
+
+
 def main():
-    if len(sys.argv) < 4:
+    args = sys.argv[1:]
+    if args and args[0] == "--support":
+        if len(args) < 2:
+            sys.exit(__doc__)
+        out = args[2] if len(args) > 2 else os.path.join(HERE, "measured")
+        os.makedirs(out, exist_ok=True)
+        support_study(args[1], out)
+        return
+    if len(args) < 3:
         sys.exit(__doc__)
-    steady, kernels, smoothing = sys.argv[1:4]
-    out = sys.argv[4] if len(sys.argv) > 4 else os.path.join(HERE, "measured")
+    steady, kernels, smoothing = args[0:3]
+    out = args[3] if len(args) > 3 else os.path.join(HERE, "measured")
     os.makedirs(out, exist_ok=True)
     base = runs_of(steady, "steady")
     kernel_runs = base + runs_of(kernels, "kernels")
@@ -131,11 +192,8 @@ def main():
             row, ts = measure(run, study)
             rows.append(row)
             series[(study, run["scheme"], run["kernel"], run["h"])] = ts
-    with open(os.path.join(out, "results.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
+    if not rows:
+        sys.exit(f"plot.py: no runs in {steady}, {kernels} or {smoothing}")
 
     profile_figure(kernel_runs, lambda r: r["kernel"], "Cavity Re = 1000, N = 3600, h = 2 dx: kernels (Szewc Fig. 5)",
                    os.path.join(out, "profiles_kernels.png"))
@@ -175,8 +233,7 @@ def main():
         ax[0][j].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "density.png"), dpi=110)
-    for r in rows:
-        print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in r.items()))
+    write_rows(rows, os.path.join(out, "results.csv"))
 
 
 if __name__ == "__main__":

@@ -6,6 +6,8 @@
                                bubble_y and spike_y in timeseries.csv
   PREFIX_interface_t<T>.csv    x0, y0, x1, y1: the segments of that contour at T = 1, 3, 5, the format
                                of arksph's interface_NNNNNN.csv
+  PREFIX_velocity_t5.csv       x, y, u, v at t = 5 as means over blocks of (N / 25)^2 cells, a 25 x 50
+                               grid (for streamlines; written when 25 divides N)
 
 The contour is matplotlib's, on the cell centres ((i + 1/2)/N, (j + 1/2)/N) of the N x 2N mesh, whose
 cells blockMesh numbers x fastest.
@@ -37,6 +39,26 @@ def read_scalars(path):
     if values.size != int(count):
         raise SystemExit(f"extract.py: {path}: {values.size} values, header says {count}")
     return values
+
+
+def read_velocity(path, count):
+    """The (u, v) of an ascii volVectorField's nonuniform internalField, shape (count, 2)."""
+    with open(path) as f:
+        text = f.read()
+    body = text[text.index("internalField"):]
+    start = body.index("(", body.index("List<vector>"))
+    values = body[start + 1:].replace("(", " ").replace(")", " ").split()
+    return np.array(values[:3 * count], dtype=float).reshape(count, 3)[:, :2]
+
+
+def write_velocity(u, n, path):
+    b = n // 25
+    grid = u.reshape(50, b, 25, b, 2).mean(axis=(1, 3))  # (row block, column block, component)
+    with open(path, "w") as f:
+        f.write("x,y,u,v\n")
+        for j in range(50):
+            for i in range(25):
+                f.write("%.4g,%.4g,%.6g,%.6g\n" % ((i + 0.5) / 25, (j + 0.5) / 25, grid[j, i, 0], grid[j, i, 1]))
 
 
 def times(case):
@@ -74,6 +96,8 @@ def main():
         if alpha.size != 2 * n * n:
             raise SystemExit(f"extract.py: {path} does not hold {2 * n * n} cell values")
         segments = contour(alpha, n)
+        if abs(t - 5) < 1e-9 and n % 25 == 0 and os.path.exists(os.path.join(folder, "U")):
+            write_velocity(read_velocity(os.path.join(folder, "U"), 2 * n * n), n, f"{prefix}_velocity_t5.csv")
         ys = [s[1] for s in segments] + [s[3] for s in segments]
         rows.append((t, max(ys), min(ys)))
         if any(abs(t - k) < 1e-9 for k in FRAMES):

@@ -28,3 +28,49 @@ foam_run() {
     FOAM_SECONDS=$(( $(date +%s) - start ))
   done
 }
+
+# foam_walled_box NX NY HEIGHT DEPTH: the blockMeshDict of the box [0, 1] x [0, HEIGHT], NX x NY
+# cells one cell DEPTH thick, its four sides one wall patch "walls", front and back "frontAndBack".
+foam_walled_box() {
+  foam_header dictionary blockMeshDict
+  cat <<EOD
+convertToMeters 1;
+vertices ((0 0 0) (1 0 0) (1 $3 0) (0 $3 0) (0 0 $4) (1 0 $4) (1 $3 $4) (0 $3 $4));
+blocks (hex (0 1 2 3 4 5 6 7) ($1 $2 1) simpleGrading (1 1 1));
+edges ();
+boundary
+(
+    walls { type wall; faces ((3 7 6 2) (0 4 7 3) (2 6 5 1) (1 5 4 0)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+);
+EOD
+}
+
+# foam_ico_schemes DDT: the fvSchemes of an icoFoam case, time scheme DDT (Euler, backward),
+# central differences in space on an orthogonal mesh.
+foam_ico_schemes() {
+  foam_header dictionary fvSchemes
+  cat <<EOD
+ddtSchemes { default $1; }
+gradSchemes { default Gauss linear; }
+divSchemes { default none; div(phi,U) Gauss linear; }
+laplacianSchemes { default Gauss linear orthogonal; }
+interpolationSchemes { default linear; }
+snGradSchemes { default orthogonal; }
+EOD
+}
+
+# foam_piso_solution P_TOL P_RELTOL U_TOL: the fvSolution of an icoFoam case: GAMG for p (pFinal to
+# P_TOL without a relative tolerance), symmetric Gauss-Seidel for U, 2 PISO correctors.
+foam_piso_solution() {
+  foam_header dictionary fvSolution
+  cat <<EOD
+solvers
+{
+    p { solver GAMG; smoother GaussSeidel; tolerance $1; relTol $2; }
+    pFinal { \$p; relTol 0; }
+    U { solver smoothSolver; smoother symGaussSeidel; tolerance $3; relTol 0; }
+}
+PISO { nCorrectors 2; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
+EOD
+}

@@ -38,6 +38,15 @@ REFERENCE = Path(__file__).resolve().parents[2] / "bench" / "openfoam_rt" / "ope
 TIMES = tuple(float(t) for t in __import__('os').environ.get('RT_TIMES', '1 3 5').split())
 
 
+def box_axes(ax):
+    """The 1 x 2 box, to scale, without ticks."""
+    ax.set_xlim(0, 1)
+    ax.set_ylim(0, 2)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+
+
 def nearest(run, t):
     fr = frames(run)
     k = min(range(len(fr)), key=lambda i: abs(fr[i][0] - t))
@@ -57,11 +66,7 @@ def grid_velocity(points, velocity):
 def streamline_panel(ax, u, v, title):
     g = (np.arange(25) + 0.5) / 25
     ax.streamplot(g, (np.arange(50) + 0.5) / 25, u, v, density=(0.8, 1.6), color="k", linewidth=0.5, arrowsize=0.5)
-    ax.set_xlim(0, 1)
-    ax.set_ylim(0, 2)
-    ax.set_aspect("equal")
-    ax.set_xticks([])
-    ax.set_yticks([])
+    box_axes(ax)
     ax.set_title(title, fontsize=8)
 
 
@@ -107,11 +112,7 @@ def interface_clumping(runs, out, t=3.0, band=0.06):
             rows.append(dict(run=label, t=tf, region=where, particles=int(mask.sum()),
                              mean_nn_over_dx=float(nn[mask].mean()), share_nn_below_0_6dx=float((nn[mask] < 0.6).mean())))
         ax.scatter(p[near, 0], p[near, 1], c=d["phase"][near], cmap="coolwarm", s=1.2, linewidths=0, vmin=0, vmax=1)
-        ax.set_xlim(0, 1)
-        ax.set_ylim(0, 2)
-        ax.set_aspect("equal")
-        ax.set_xticks([])
-        ax.set_yticks([])
+        box_axes(ax)
         ax.set_title("%s, t = %g" % (label, tf), fontsize=8)
     fig.tight_layout()
     fig.savefig(out / "rt_interface_t3.png", dpi=130)
@@ -148,11 +149,7 @@ def main():
                     for row in csv.DictReader(f):
                         ax.plot([float(row["x0"]), float(row["x1"])], [float(row["y0"]), float(row["y1"])], "-",
                                 color="lime", lw=0.6)
-            ax.set_xlim(0, 1)
-            ax.set_ylim(0, 2)
-            ax.set_aspect("equal")
-            ax.set_xticks([])
-            ax.set_yticks([])
+            box_axes(ax)
             ax.set_title("%s, t = %g" % (label, tf), fontsize=8)
     fig.tight_layout()
     fig.savefig(out / "rt_particles.png", dpi=150)

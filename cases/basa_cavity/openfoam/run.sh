@@ -108,28 +108,9 @@ functions
 EOD
 } > "$work/system/controlDict"
 
-{ foam_header dictionary fvSchemes
-  cat <<'EOD'
-ddtSchemes { default Euler; }
-gradSchemes { default Gauss linear; }
-divSchemes { default none; div(phi,U) Gauss linear; }
-laplacianSchemes { default Gauss linear orthogonal; }
-interpolationSchemes { default linear; }
-snGradSchemes { default orthogonal; }
-EOD
-} > "$work/system/fvSchemes"
+foam_ico_schemes Euler > "$work/system/fvSchemes"
 
-{ foam_header dictionary fvSolution
-  cat <<'EOD'
-solvers
-{
-    p { solver GAMG; smoother GaussSeidel; tolerance 1e-06; relTol 0.05; }
-    pFinal { $p; relTol 0; }
-    U { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-06; relTol 0; }
-}
-PISO { nCorrectors 2; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-EOD
-} > "$work/system/fvSolution"
+foam_piso_solution 1e-06 0.05 1e-06 > "$work/system/fvSolution"
 
 { foam_header dictionary transportProperties
   echo "nu $nu;"

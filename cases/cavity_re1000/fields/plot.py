@@ -39,7 +39,7 @@ from vtp_frames import frames, read_vtp  # noqa: E402
 _spec = importlib.util.spec_from_file_location("kernel_study_plot", os.path.join(HERE, "..", "kernels", "plot.py"))
 _kernel_study = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(_kernel_study)
-close_pairs, read_rows = _kernel_study.close_pairs, _kernel_study.read_rows  # the kernel study's readers
+close_pairs, read_rows = _kernel_study.close_pairs, _kernel_study.read_rows  # the kernel study's readers and writer
 
 DX = 1.0 / 60.0
 H = 2.0 * DX
@@ -214,13 +214,7 @@ def main():
         row, ts = measure(run)
         rows.append(row)
         series[run["folder"]] = ts
-    with open(os.path.join(out, "results.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
-    for r in rows:
-        print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in r.items()))
+    _kernel_study.write_rows(rows, os.path.join(out, "results.csv"))
     if free_slip:
         fig3(free_slip, os.path.join(out, "fig3_free_slip.png"))
     wcsph = [r for r in fields if r["keys"]["method.scheme"] == "wcsph"]

@@ -45,19 +45,7 @@ nu=0.002380952380952381      # 1/420
 depth=$("$python" -c "print(repr(1.0 / $n))")
 ny=$(( 2 * n ))
 
-{ foam_header dictionary blockMeshDict
-  cat <<EOD
-convertToMeters 1;
-vertices ((0 0 0) (1 0 0) (1 2 0) (0 2 0) (0 0 $depth) (1 0 $depth) (1 2 $depth) (0 2 $depth));
-blocks (hex (0 1 2 3 4 5 6 7) ($n $ny 1) simpleGrading (1 1 1));
-edges ();
-boundary
-(
-    walls { type wall; faces ((3 7 6 2) (0 4 7 3) (2 6 5 1) (1 5 4 0)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
-);
-EOD
-} > "$work/system/blockMeshDict"
+foam_walled_box "$n" "$ny" 2 "$depth" > "$work/system/blockMeshDict"
 
 { foam_header dictionary controlDict
   cat <<'EOD'

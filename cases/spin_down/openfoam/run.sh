@@ -35,19 +35,7 @@ mkdir -p "$work/0" "$work/constant" "$work/system"
 depth=$("$python" -c "print(repr(1.0 / $n))")
 dt=$depth
 
-{ foam_header dictionary blockMeshDict
-  cat <<EOD
-convertToMeters 1;
-vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 $depth) (1 0 $depth) (1 1 $depth) (0 1 $depth));
-blocks (hex (0 1 2 3 4 5 6 7) ($n $n 1) simpleGrading (1 1 1));
-edges ();
-boundary
-(
-    walls { type wall; faces ((3 7 6 2) (0 4 7 3) (2 6 5 1) (1 5 4 0)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
-);
-EOD
-} > "$work/system/blockMeshDict"
+foam_walled_box "$n" "$n" 1 "$depth" > "$work/system/blockMeshDict"
 
 { foam_header dictionary controlDict
   cat <<EOD
@@ -69,28 +57,9 @@ runTimeModifiable false;
 EOD
 } > "$work/system/controlDict"
 
-{ foam_header dictionary fvSchemes
-  cat <<'EOD'
-ddtSchemes { default backward; }
-gradSchemes { default Gauss linear; }
-divSchemes { default none; div(phi,U) Gauss linear; }
-laplacianSchemes { default Gauss linear orthogonal; }
-interpolationSchemes { default linear; }
-snGradSchemes { default orthogonal; }
-EOD
-} > "$work/system/fvSchemes"
+foam_ico_schemes backward > "$work/system/fvSchemes"
 
-{ foam_header dictionary fvSolution
-  cat <<'EOD'
-solvers
-{
-    p { solver GAMG; smoother GaussSeidel; tolerance 1e-08; relTol 0.01; }
-    pFinal { $p; relTol 0; }
-    U { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-09; relTol 0; }
-}
-PISO { nCorrectors 2; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
-EOD
-} > "$work/system/fvSolution"
+foam_piso_solution 1e-08 0.01 1e-09 > "$work/system/fvSolution"
 
 { foam_header dictionary transportProperties
   echo "nu $("$python" -c 'print(repr(1.0 / 420.0))');"

@@ -128,8 +128,9 @@ def run_one(binary, out_dir, letter, model, corr, eos, re, max_steps, keep_serie
         status = "steady"
     elif "max_steps" in stderr:
         status = "capped"
-    else:  # arksph stopped on a blow-up before eps was sampled above the threshold
-        status, fail = "failed", reached
+    else:  # arksph stopped on a blow-up before eps was sampled above the threshold; before
+        # TSTAR_JUDGE it counts there, as a blow-up seen in eps does
+        status, fail = "failed", max(reached, TSTAR_JUDGE)
     row = dict(model=model, letter=letter, correction=corr, eos=eos, re=re, status=status,
                tstar_fail="" if fail is None else f"{fail:.4g}", tstar_reached=f"{reached:.4g}",
                eps_last=f"{series[-1][1]:.4g}" if series else "", steps=steps, wall_s=f"{wall:.1f}")

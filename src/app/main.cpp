@@ -22,7 +22,7 @@
 
 #include "distributed/distributed_run.hpp"
 #include "parallel/communicator.hpp"
-#include "study/batch_ranks.hpp"
+#include "run/launcher_ranks.hpp"
 #endif
 
 namespace {
@@ -161,7 +161,7 @@ int cmd_run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  arksph::prefer_passive_omp_waiting(argv);  // see app/omp_wait_policy.hpp
+  arksph::prefer_passive_omp_waiting(argv);  // see run/omp_wait_policy.hpp
   try {
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
       std::fputs(kUsage, stdout);

@@ -17,25 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "run/launcher_ranks.hpp"
 #include "study/batch.hpp"
 
 namespace arksph {
-
-struct LauncherRanks {
-  int rank = 0, size = 1;  // size 1: not started by a launcher (or by one with a single process)
-  int local_size = 1;      // processes of the launch on this host
-  std::string launch;      // the same for every rank of one launch, different for another launch
-};
-
-// From OMPI_COMM_WORLD_RANK/SIZE (Open MPI) or PMI_RANK/SIZE (MPICH's Hydra and other PMI
-// launchers); the launch id from PMIX_NAMESPACE, OMPI_MCA_ess_base_jobid or PMI_KVSNAME, else the
-// host and parent pid (the launcher's local daemon). InputError for an inconsistent rank/size.
-LauncherRanks launcher_ranks_from_environment();
-
-// Removes the rank and size variables read above from this process's environment: a batch's child
-// runs are single processes, and `arksph run` under a launcher of several processes runs decomposed
-// over them (docs/parallel.md).
-void forget_launcher_ranks();
 
 // Rank 0, holding the folder lock: removes the files of an earlier launch, writes the group file.
 void publish_batch_group(const std::string& folder, const LauncherRanks& ranks);

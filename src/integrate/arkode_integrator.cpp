@@ -174,7 +174,7 @@ void ArkodeIntegrator::reset(double t) {
 void ArkodeIntegrator::restart_at(double t, double h) {
   // ReInit, unlike Reset, also clears the step-size controller's history and the counters, as in a
   // new integrator; the counters live on in offset_.
-  const ErkStats total = stats();
+  const StepStats total = stats();
   reinit(t);
   t_ = t;
   offset_ = total;
@@ -206,8 +206,8 @@ double ArkodeIntegrator::next_step() const {
   return h;
 }
 
-ErkStats ArkodeIntegrator::stats() const {
-  ErkStats s = module_stats();
+StepStats ArkodeIntegrator::stats() const {
+  StepStats s = module_stats();
   s.steps += offset_.steps;  // restart: the counters of the run before
   s.rhs_evals += offset_.rhs_evals;
   s.attempts += offset_.attempts;

@@ -61,7 +61,7 @@ class ArkodeIntegrator : public TimeIntegrator {
   // Re-initialises the method at (t, state()) after the state was changed outside ARKODE.
   void reset(double t) final;
   std::size_t size() const final { return n_; }
-  ErkStats stats() const final;
+  StepStats stats() const final;
   // Checkpoints (io/checkpoint.hpp): re-initialises at (t, state()) as a new integrator created
   // there would start (first step h in adaptive mode; the fixed step otherwise), so that a run
   // restarted from the checkpoint continues bit for bit.
@@ -108,7 +108,7 @@ class ArkodeIntegrator : public TimeIntegrator {
   // counters back to zero: the start of a new integrator.
   virtual void reinit(double t) = 0;
   // The counters since the creation or the last reinit (without the offset of a restart).
-  virtual ErkStats module_stats() const = 0;
+  virtual StepStats module_stats() const = 0;
 
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;

@@ -123,8 +123,8 @@ int ErkIntegrator::rhs_cb(double t, N_Vector y, N_Vector ydot, void* user_data) 
 
 void ErkIntegrator::reinit(double t) { check(ERKStepReInit(mem_, &ErkIntegrator::rhs_cb, t, y_), "ReInit"); }
 
-ErkStats ErkIntegrator::module_stats() const {
-  ErkStats s;
+StepStats ErkIntegrator::module_stats() const {
+  StepStats s;
   long nst = 0, nacc = 0, natt = 0, nfe = 0, netf = 0;
   ERKStepGetTimestepperStats(mem_, &nacc, &nst, &natt, &nfe, &netf);
   ERKStepGetNumSteps(mem_, &nst);

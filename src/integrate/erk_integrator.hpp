@@ -43,7 +43,7 @@ class ErkIntegrator final : public ArkodeIntegrator {
  private:
   static int rhs_cb(double t, N_Vector y, N_Vector ydot, void* user_data) noexcept;
   void reinit(double t) override;
-  ErkStats module_stats() const override;
+  StepStats module_stats() const override;
   RhsFunction f_;
   std::function<void(double, double*)> post_;
   std::function<void(double, double*)> post_stage_;

@@ -162,8 +162,8 @@ void ImexIntegrator::reinit(double t) {
   last_J_ = nullptr;
 }
 
-ErkStats ImexIntegrator::module_stats() const {
-  ErkStats s;
+StepStats ImexIntegrator::module_stats() const {
+  StepStats s;
   long nst_stab = 0, nacc = 0, natt = 0, nfe = 0, nfi = 0, nls = 0, netf = 0, nst = 0;
   ARKStepGetTimestepperStats(mem_, &nst_stab, &nacc, &natt, &nfe, &nfi, &nls, &netf);
   ARKStepGetNumSteps(mem_, &nst);

@@ -4,7 +4,7 @@
 // implicit stages z = a + gamma f_I(z) are solved by ARKODE's Newton iteration with SUNLinSol_KLU on
 // the sparse Newton matrix M = I - gamma J, J = df_I/dy given by the caller in CSR form.
 //
-// Built for the viscous term of the run (time.imex, see app/viscous_split.hpp): f_I is zero outside
+// Built for the viscous term of the run (time.imex, see integrate/viscous_split.hpp): f_I is zero outside
 // the velocity block and affine in the velocities once positions and densities are frozen, which
 // they are during a stage solve (their f_I rows vanish). J is therefore evaluated at the stage's
 // frozen state (ARKStepGetNonlinearSystemData: zpred + sdata on those rows), and with `linear`
@@ -65,7 +65,7 @@ class ImexIntegrator final : public ArkodeIntegrator {
   int newton_matrix(double t, N_Vector y, SUNMatrix A, int jok, int* jcur, double gamma);
   int fill_newton_matrix(const SparseCsr& J, SUNMatrix A, double gamma, int* jcur, bool fresh);
   void reinit(double t) override;
-  ErkStats module_stats() const override;
+  StepStats module_stats() const override;
   ImexFunctions f_;
   bool linear_ = true;
   const SparseCsr* last_J_ = nullptr;  // the last J handed over (stays valid: owned by the caller)

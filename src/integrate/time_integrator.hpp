@@ -6,7 +6,8 @@
 
 namespace arksph {
 
-struct ErkStats {
+// The counters of a time integrator (ERKStep or ARKStep), cumulative over the run.
+struct StepStats {
   long steps = 0, rhs_evals = 0, attempts = 0, error_test_fails = 0;
   double last_step = 0;
   // IMEX only (zero for ERKStep): implicit RHS evaluations, Newton iterations and failures,
@@ -27,17 +28,17 @@ class TimeIntegrator {
   // Re-initialises the method at (t, state()) after the state was changed outside ARKODE.
   virtual void reset(double t) = 0;
   virtual std::size_t size() const = 0;
-  virtual ErkStats stats() const = 0;
+  virtual StepStats stats() const = 0;
   // True when the SUNDIALS 6.4.1 FSAL workaround is installed (ERKStep only).
   virtual bool workaround_installed() const { return false; }
   // Re-initialises at (t, state()) as a new integrator created there would start (checkpoints).
   virtual void restart_at(double t, double h) = 0;
   virtual double next_step() const = 0;  // the step size the integrator will attempt next
   // Counters of the run before a restart, added to stats().
-  void set_counter_offset(const ErkStats& offset) { offset_ = offset; }
+  void set_counter_offset(const StepStats& offset) { offset_ = offset; }
 
  protected:
-  ErkStats offset_{};
+  StepStats offset_{};
 };
 
 }  // namespace arksph

@@ -53,7 +53,7 @@ std::vector<std::string> RunOutput::csv_columns() const {
   return c;
 }
 
-void RunOutput::write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats) {
+void RunOutput::write(double t, const double* y, const std::vector<double>& d0, const StepStats& stats) {
   RhsEvaluator& rhs = *model_.rhs;
   rhs.eval(t, y, nullptr);  // fresh density, pressure, neighbours (timed as neighbors + rhs)
   const auto t0 = clock_type::now();
@@ -87,7 +87,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   record(diag, stats, &fr);
 }
 
-void RunOutput::record(const FrameDiagnostics& diag, const ErkStats& stats, const Frame* whole) {
+void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole) {
   auto t0 = clock_type::now();
   const double t = diag.t;
   last_ = diag.metrics;
@@ -182,7 +182,7 @@ const double* RunOutput::projected_pressure() const {
   return model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data() : nullptr;
 }
 
-void RunOutput::finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
+void RunOutput::finish(const RunResult& result, const StepStats& stats, double wall_seconds, long diag_evals,
                        long wall_reflections, long neighbor_rebuilds) {
   const RhsTiming& rt = model_.rhs->timing();
   Json j = Json::object();

@@ -7,9 +7,13 @@
 #include <limits>
 #include <string>
 
-#include "core/errors.hpp"
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
 
+#include "core/errors.hpp"
 #include "kernels/kernel.hpp"
+#include "neighbors/neighborhood.hpp"
 
 namespace arksph {
 
@@ -111,9 +115,7 @@ void build_pairs(const CellList& cells, const Kernel& kernel, const double* x, c
   }
 }
 
-}  // namespace arksph
 
-namespace arksph {
 
 namespace {
 // Candidates of a among the points of sorted entries [lo, hi): the same test as for_each_near
@@ -243,16 +245,6 @@ void pairs_from_candidates(const CandidateList& cand, const Kernel& kernel, cons
     kernel.eval_many(k - base, pf + base, pw + base, pf + base);
   }
 }
-
-}  // namespace arksph
-
-#include "neighbors/neighborhood.hpp"
-
-#if defined(__AVX2__)
-#include <immintrin.h>
-#endif
-
-namespace arksph {
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The body force g(x, y, t) of the scene (fluid.body_force) as the wall treatment needs it: the
 // hydrostatic pressure step of a wall ghost (rhs/ghost_field.hpp), the Neumann data of the
-// projection's pressure equation and the body-force part of its source (projection/wall_neumann.hpp).
+// projection's pressure equation and the body-force part of its source (projection/ppe_assembly.hpp).
 // Components that are constants are evaluated once; the others per call (not thread-safe).
 #pragma once
 #include <string>

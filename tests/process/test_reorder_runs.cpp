@@ -1,4 +1,4 @@
-// Re-sorting particles by cell at sync points (method.reorder_every, app/particle_reorder.hpp), on
+// Re-sorting particles by cell at sync points (method.reorder_every, run/particle_reorder.hpp), on
 // runs of the binary: a run with re-sorts against the same run without, particle by particle
 // matched by id; the order after a re-sort; and a checkpoint restart across re-sorts against the
 // run that never stopped.

@@ -1,4 +1,4 @@
-// The cell order that re-sorting uses (app/particle_reorder.hpp): a stable permutation into
+// The cell order that re-sorting uses (run/particle_reorder.hpp): a stable permutation into
 // non-decreasing row-major cell index. Runs with re-sorts: process/test_reorder_runs.cpp.
 #include <doctest/doctest.h>
 

@@ -82,21 +82,10 @@ void HaloProjection::project(double t, double* y) {
   if (dt <= 0) return;  // the same on every rank (the same steps)
   project_velocities(dt, t, y);
   const StateLayout L = owned_.layout();
-  const std::size_t n = L.n;
-  const FluidFields& f = f_.evaluator().fields();
 
   // 4. Positions centred in time, C&R eq. 12, plus the step's regularisation displacement dt du_s
   // (du_s of the fields at r*), as in one process.
-  if (centre_positions_ && y_prev_.size() == L.size()) {
-    for (int k = 0; k < L.dim; ++k) {
-      const std::vector<double>& shift = k == 0 ? f.shift_u : f.shift_v;
-      for (std::size_t a = 0; a < n; ++a) {
-        const double u_new = y[L.vel(k) + a], u_old = y_prev_[L.vel(k) + a];
-        y[L.pos(k) + a] = y_prev_[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
-        if (!shift.empty()) y[L.pos(k) + a] += dt * shift[a];
-      }
-    }
-  }
+  if (centre_positions_ && y_prev_.size() == L.size()) centre_positions(L, f_.evaluator().fields(), y_prev_, dt, y);
   stats_.seconds += since(t0);
 
   // 5. Density correction, Szewc eqs. 57-59 (timed separately).

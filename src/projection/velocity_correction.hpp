@@ -1,8 +1,9 @@
-// The velocity correction of C&R's projection (Cummins & Rudman 1999 eq. 11):
+// The corrections of C&R's projection after a step, shared by the one-process projection and the
+// decomposed one. The velocity correction (Cummins & Rudman 1999 eq. 11):
 //   u_a <- u_a - dt sum_b m_b (P_a / rho_a^2 + P_b / rho_b^2) grad_a W_ab
 // over the stored pairs of the real particles [0, n). P holds a value per real point of f; ghosts
 // read their source's value (plus the hydrostatic step under a body force: FluidFields::point_pressure).
-// Shared by the one-process projection and the decomposed one (which passes its halo's P after its own).
+// (The decomposed projection passes its halo's P after its own.)
 // steps = false: ghosts read their source's value only (a potential, not a pressure: the
 // constrained projection's start).
 #pragma once
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/particles.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -28,6 +30,23 @@ inline void subtract_pressure_gradient(const FluidFields& f, const std::vector<d
     });
     u[a] -= dt * gx;
     if (v) v[a] -= dt * gy;
+  }
+}
+
+// The positions centred in time (C&R eq. 12) from the step's start y_prev (the whole state at
+// r^n) and the projected velocities of y:
+//   r_a <- r_a^n + dt (u_a^{n+1} + u_a^n) / 2 + dt du_s,a
+// where du_s is the regularisation velocity of f (shift_u, shift_v; none when they are empty),
+// computed at r* by the projection's evaluation.
+inline void centre_positions(const StateLayout& L, const FluidFields& f, const std::vector<double>& y_prev, double dt,
+                             double* y) {
+  for (int k = 0; k < L.dim; ++k) {
+    const std::vector<double>& shift = k == 0 ? f.shift_u : f.shift_v;
+    for (std::size_t a = 0; a < L.n; ++a) {
+      const double u_new = y[L.vel(k) + a], u_old = y_prev[L.vel(k) + a];
+      y[L.pos(k) + a] = y_prev[L.pos(k) + a] + dt * 0.5 * (u_new + u_old);
+      if (!shift.empty()) y[L.pos(k) + a] += dt * shift[a];
+    }
   }
 }
 

@@ -9,16 +9,11 @@
 #include <string>
 
 #include "parallel/communicator.hpp"
+#include "run/verdict.hpp"
 
 namespace arksph::distributed {
 
-struct Verdict {
-  int code = 0;  // 0: go on
-  std::string message;
-  // Among ranks with the same code, a message that names the failing particle wins over one that
-  // cannot (ARKODE gives up on every rank, but only the rank of the particle knows which it was).
-  bool names_particle = false;
-};
+using arksph::Verdict;  // run/verdict.hpp
 
 // Collective.
 Verdict agree(const parallel::Communicator& comm, const Verdict& mine);

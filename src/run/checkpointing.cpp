@@ -88,8 +88,8 @@ int Checkpointer::first_frame() const {
   return static_cast<int>(next_index(restart_->time, scene_.every, restart_->output_frame));
 }
 
-ErkStats Checkpointer::counters() const {
-  ErkStats s;
+StepStats Checkpointer::counters() const {
+  StepStats s;
   if (!restart_) return s;
   s.steps = restart_->steps;
   s.rhs_evals = restart_->rhs_evals;
@@ -136,7 +136,7 @@ std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frame
                      process_cpu_seconds());
 }
 
-std::string Checkpointer::write_state(double t, const double* y, const ErkStats& st, double next_step, long frames,
+std::string Checkpointer::write_state(double t, const double* y, const StepStats& st, double next_step, long frames,
                                       long reflections, double segment_cpu) {
   const StateLayout& L = model_.rhs->layout();
   Checkpoint c;

@@ -29,11 +29,6 @@ namespace arksph {
 // time.end = 0.3 and a longer run with a checkpoint at 0.3 stop the integrator at the same time.
 double scheduled_time(long k, double every);
 
-// Thrown by the run loop when SIGINT/SIGTERM arrived (app/interrupt.hpp).
-struct Interrupted {
-  int signal = 0;
-};
-
 class Checkpointer {
  public:
   // `restart` (may be null) is the checkpoint this run starts from, read from `restart_path`;
@@ -52,7 +47,7 @@ class Checkpointer {
   int first_frame() const;
   std::string path() const { return path_; }
   // The integrator counters of the checkpointed run (TimeIntegrator::set_counter_offset).
-  ErkStats counters() const;
+  StepStats counters() const;
 
   // The stop time for the next step: t_stop, or the next scheduled checkpoint if that comes first.
   double limit(double t_stop);
@@ -72,7 +67,7 @@ class Checkpointer {
   // integrator's counters `st` and its next step size. Returns the path.
   // `segment_cpu` is the CPU time of this run since it started (all ranks'); the checkpoint
   // stores it added to the earlier segments' (earlier_cpu_seconds).
-  std::string write_state(double t, const double* y, const ErkStats& st, double next_step, long frames,
+  std::string write_state(double t, const double* y, const StepStats& st, double next_step, long frames,
                           long reflections, double segment_cpu);
   // CPU time of the runs this one continues (0 for a run from t = 0).
   double earlier_cpu_seconds() const { return restart_ ? restart_->cpu_seconds : 0.0; }

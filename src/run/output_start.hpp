@@ -6,7 +6,7 @@
 
 #include "core/scene.hpp"
 #include "run/output_folder.hpp"
-#include "run/simulation.hpp"
+#include "run/run_result.hpp"
 
 namespace arksph {
 

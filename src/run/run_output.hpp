@@ -7,7 +7,7 @@
 
 #include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "run/setup.hpp"
-#include "run/simulation.hpp"
+#include "run/run_result.hpp"
 #include "diagnostics/flow_metrics.hpp"
 #include "diagnostics/frame_reduction.hpp"
 #include "diagnostics/steady_state.hpp"
@@ -18,7 +18,7 @@
 
 namespace arksph {
 
-struct OutputHistory;  // checkpoint restart (app/output_resume.hpp)
+struct OutputHistory;  // checkpoint restart (run/output_resume.hpp)
 
 class RunOutput {
  public:
@@ -28,13 +28,13 @@ class RunOutput {
   void add_term(const std::string& t) { model_.terms.push_back(t); }
   // Refreshes the fields at (t, y), computes the metrics, writes a frame (rows in id order) and a
   // CSV row. Throws OutputError when a file cannot be written.
-  void write(double t, const double* y, const std::vector<double>& d0, const ErkStats& stats);
+  void write(double t, const double* y, const std::vector<double>& d0, const StepStats& stats);
   // A frame whose diagnostics were computed elsewhere (a decomposed run reduces them over its ranks,
   // diagnostics/frame_reduction.hpp): the CSV row and files of `diag`, and the frame: the pieces'
   // index (set_pieces), else `whole` (rows in any order, written in id order; null: no frame file).
-  void record(const FrameDiagnostics& diag, const ErkStats& stats, const Frame* whole);
+  void record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole);
   // Writes summary.json (also after a failure: status "failed" with the diagnosis). Throws OutputError.
-  void finish(const RunResult& result, const ErkStats& stats, double wall_seconds, long diag_evals,
+  void finish(const RunResult& result, const StepStats& stats, double wall_seconds, long diag_evals,
               long wall_reflections, long neighbor_rebuilds);
   // time.steady_tolerance: the flow was steady at the latest output time (diagnostics/steady_state.hpp).
   bool steady() const { return steady_.steady(); }
@@ -43,7 +43,7 @@ class RunOutput {
   // Restart: the steady-state samples of the checkpoint (rows of `columns` values: t, KE,
   // centreline...), taken up again so that the windows continue across the restart.
   void restore_steady(const std::vector<double>& rows, int columns);
-  // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in app/output_resume.cpp).
+  // Restart: continue an earlier run's frames, PVD entries and CSV rows (defined in run/output_resume.cpp).
   void resume(const OutputHistory& earlier);
   // method.reorder_every: re-sorts that changed the order, and their time (summary.json).
   // summary.json "mpi": the ranks of the run (1 for one process) and, over several ranks, what the

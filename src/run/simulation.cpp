@@ -1,16 +1,13 @@
-// The run loop: step (ARKODE), check, diagnose, write. Reads like the algorithm:
-//   set up -> write t = 0 -> repeat { advance one step; check the state } and at each output time
-//   { refresh fields; diagnostics; write frame, CSV row }, at each checkpoint time { checkpoint.h5 }
-//   -> checkpoint.h5, summary.json. A restart (options.restart) starts the same loop from a checkpoint.
+// A run on one process: the set-up of the model, the output folder, the integrator and the frame at
+// t = 0 (or the state of a checkpoint), then the run loop (run/run_loop.hpp) with the strategy of one
+// process: f(t, y) over every particle, wall reflections and re-sorts at the sync points, frames and
+// checkpoints of the integrator's state.
 #include "run/simulation.hpp"
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <iostream>
-#include <new>
+#include <optional>
 
 #include "run/checkpointing.hpp"  // checkpoints and restart
 #include "run/cpu_time.hpp"
@@ -19,7 +16,7 @@
 #include "run/output_start.hpp"
 #include "run/output_resume.hpp"
 #include "run/particle_reorder.hpp"
-#include "run/progress.hpp"
+#include "run/run_loop.hpp"
 #include "run/run_output.hpp"
 #include "run/setup.hpp"
 #include "run/state_check.hpp"
@@ -68,169 +65,165 @@ void print_run_header(const Scene& scene, const Model& model) {
   std::fflush(stdout);
 }
 
-}  // namespace
+class LocalRun final : public RunStrategy {
+ public:
+  LocalRun(const Scene& scene, const RunOptions& options);
 
-RunResult run_simulation(const Scene& scene, const RunOptions& options) {
-  using clock = std::chrono::steady_clock;
-  const auto wall_start = clock::now();
-  poll_setup_interrupt();  // set-up polls for a signal between its phases and in its long loops
-  Model model = build_model(scene);
+  double start_time() const override { return checkpoints_->start_time(); }
+  int first_frame() const override { return checkpoints_->first_frame(); }
+  TimeIntegrator& integrator() override { return *stepper_.integrator; }
+  double step(double t, double stop) override { return stepper_.step(t, stop); }
+  double limit(double t_stop) override { return checkpoints_->limit(t_stop); }
+  Verdict reflect_and_check(double t, Verdict mine) override;
+  Verdict agree_after_step(double, const Verdict& mine) override { return mine; }
+  void sync_point(double t, long steps) override {  // particles by cell
+    if (reorder_.due(steps)) reorder_.apply(t, integrator(), d0_, stepper_.split.get());
+  }
+  void write_frame(double t, const StepStats& stats) override {
+    const long before = model_.rhs->evaluations();
+    out_->write(t, integrator().state(), d0_, stats);
+    diag_evals_ += model_.rhs->evaluations() - before;
+  }
+  bool steady() override { return out_->steady(); }
+  double steady_rate() const override { return out_->steady_rate(); }
+  void checkpoint_if_due(double t, int frame) override {
+    checkpoints_->at(t, integrator(), *model_.rhs, frame, reflections_);
+  }
+  std::string checkpoint_at_end(double t, int frame) override {
+    checkpoints_->at_end(t, integrator(), frame, reflections_);
+    return checkpoints_->path();
+  }
+  std::string checkpoint_now(double t, int frame) override {
+    return checkpoints_->write(t, integrator(), frame, reflections_);
+  }
+  std::string checkpoint_path() const override { return checkpoints_->path(); }
+  Verdict numerical_failure(const std::string& what) override { return {3, what}; }
+  Verdict out_of_memory(double t) override {
+    return {6, "out of memory at t = " + std::to_string(t) + ": an allocation failed while " + activity()};
+  }
+  void finish(RunResult& result, double wall, double stepping) override;
+
+ private:
+  void start_integrator(std::vector<double>& y0);
+  const Scene& scene_;
+  Model model_;
+  OutputFolder folder_;
+  std::string run_id_;
+  std::vector<double> d0_;  // number density at t = 0, in the current particle order
+  ParticleReorder reorder_;
+  std::optional<Checkpointer> checkpoints_;
+  std::optional<RunOutput> out_;
+  ErkOptions eo_;
+  TimeStepper stepper_;
+  std::optional<StateChecker> checker_;
+  std::optional<WallReflection> reflection_;
+  long reflections_ = 0;
+  long diag_evals_ = 0;  // evaluations for the frames' diagnostics (summary.json)
+};
+
+LocalRun::LocalRun(const Scene& scene, const RunOptions& options)
+    : scene_(scene), model_(build_model(scene)), folder_(scene.directory, scene.source), reorder_(scene, model_) {
   // The output folder: locked for this run; a fresh run clears an earlier run's outputs, a restart
   // continues only its own run's (run/output_folder.hpp).
-  OutputFolder folder(scene.directory, scene.source);
-  if (!options.overwrite) folder.refuse_foreign_files();
-  const std::string run_id = start_output_folder(folder, scene, options);
-  RhsEvaluator& rhs = *model.rhs;
+  if (!options.overwrite) folder_.refuse_foreign_files();
+  run_id_ = start_output_folder(folder_, scene, options);
+  RhsEvaluator& rhs = *model_.rhs;
   const StateLayout& layout = rhs.layout();
-  print_run_header(scene, model);
+  print_run_header(scene, model_);
   const std::string particles = std::to_string(layout.n) + " particles";
   rhs.set_between_phases(poll_setup_interrupt);  // until the first step (see below)
 
   set_activity("setting up the initial state of " + particles);
   std::vector<double> y0(layout.size());
   rhs.initial_state(y0.data());
-  std::vector<double> d0;
-  ParticleReorder reorder(scene, model);
-  if (scene.reorder_every > 0) reorder.sort(y0.data(), d0);  // t = 0 is a sync point (before the first f)
+  if (scene.reorder_every > 0) reorder_.sort(y0.data(), d0_);  // t = 0 is a sync point (before the first f)
   poll_setup_interrupt();
   set_activity("building the neighbour lists and initial fields of " + particles);
   rhs.eval(0.0, y0.data(), nullptr);
   poll_setup_interrupt();
-  d0 = number_density(rhs.fields());  // at t = 0 in the t = 0 order, also on restart (bit-identical diagnostics)
+  d0_ = number_density(rhs.fields());  // at t = 0 in the t = 0 order, also on restart (bit-identical diagnostics)
   // Restart: the particles in the checkpoint's order (re-sorts, method.reorder_every); check the
   // checkpoint against the scene, and read the earlier output before RunOutput truncates it.
-  if (options.restart) permute(d0, adopt_particle_order(model, options.restart->id));
-  Checkpointer checkpoints(scene, model, options.restart, options.restart_path);
-  checkpoints.set_run_id(run_id);
-  const OutputHistory earlier = checkpoints.restarting() ? read_output_history(scene.directory, checkpoints.start_time(),
-                                                                               checkpoints.restart().output_frame, scene.every)
-                                                         : OutputHistory{};
-  RunOutput out(scene, model, options, run_id);  // truncates timeseries.csv
-  if (checkpoints.restarting()) {
-    out.resume(earlier);
-    out.restore_steady(checkpoints.restart().steady_samples, checkpoints.restart().steady_columns);
+  if (options.restart) permute(d0_, adopt_particle_order(model_, options.restart->id));
+  checkpoints_.emplace(scene, model_, options.restart, options.restart_path);
+  checkpoints_->set_run_id(run_id_);
+  const bool restarting = checkpoints_->restarting();
+  const OutputHistory earlier = restarting ? read_output_history(scene.directory, checkpoints_->start_time(),
+                                                                 checkpoints_->restart().output_frame, scene.every)
+                                           : OutputHistory{};
+  out_.emplace(scene, model_, options, run_id_);  // truncates timeseries.csv
+  if (restarting) {
+    out_->resume(earlier);
+    out_->restore_steady(checkpoints_->restart().steady_samples, checkpoints_->restart().steady_columns);
   }
-  checkpoints.set_steady_monitor(&out.steady_monitor());
-
-  ErkOptions eo = integrator_options(scene);
-  eo.describe_entry = [&](std::size_t i, double v) { return describe_rhs_entry(layout, model.particles.id, i, v); };
-  eo.stability = [&](double, const double* y) {
-    return stable_step(scene, model, max_speed(layout, y), rhs.max_acceleration());
-  };
-  eo.initial_dt = stable_step(scene, model, max_speed(layout, y0.data()), rhs.max_acceleration());
-  if (model.projection && !model.projection->constrained()) {
-    Projection* proj = model.projection.get();
-    eo.postprocess = [proj](double t, double* y) { proj->project(t, y); };
-    if (scene.projection_points == "stages") eo.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
-  }
-  if (checkpoints.restarting()) {  // continue from the stored state; d0 stays that of t = 0
-    y0 = checkpoints.restart().state;
-    eo.initial_dt = checkpoints.restart().next_step;
-    rhs.invalidate_neighbors();
-    StateChecker(scene, model).check(checkpoints.start_time(), y0.data());  // NaN, blow-up, escape in the file
-  }
-  poll_setup_interrupt();
-  set_activity("creating the time integrator for " + particles);
-  const long diag_evals_before = rhs.evaluations();
-  // A constrained projection starts from a divergence-free velocity (a restart already is).
-  if (model.projection && !checkpoints.restarting()) model.projection->project_initial(0.0, y0.data());
-  TimeStepper stepper = make_time_stepper(scene, rhs, eo, y0, checkpoints.start_time(), model.projection.get());
-  TimeIntegrator& integrator = *stepper.integrator;
-  integrator.set_counter_offset(checkpoints.counters());
-  if (integrator.workaround_installed()) out.add_term("erkstep:fsal_bug_workaround");
-
-  StateChecker checker(scene, model);
-  const WallReflection reflection(scene, layout);
-  long reflections = checkpoints.restarting() ? checkpoints.restart().wall_reflections : 0;
-  Progress progress(scene.end, options.quiet);
-  long diag_evals = rhs.evaluations() - diag_evals_before + 1;
+  checkpoints_->set_steady_monitor(&out_->steady_monitor());
+  start_integrator(y0);
 
   poll_setup_interrupt();
   set_activity("writing the output at t = 0 of " + particles);
-  double t = checkpoints.start_time();
-  int frame = checkpoints.first_frame();
-  int tiny_steps = 0;  // adaptive steps in a row below the underflow floor (check_step_size)
-  RunResult result;
-  double stepping = 0;  // the steps alone (summary.json timing.stepping)
-  try {
-    // Output at t = 0, every `every`, and the end time exactly.
-    if (!checkpoints.restarting()) out.write(0.0, y0.data(), d0, integrator.stats());
-    std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
-    poll_setup_interrupt();
-    rhs.set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
-    set_activity("stepping " + particles);
-    while (t < scene.end) {
-      double t_next = scene.every > 0 ? scheduled_time(frame, scene.every) : scene.end;  // 3 * 0.1 -> 0.3
-      if (t_next > scene.end * (1 - 1e-12)) t_next = scene.end;
-      double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
-      while (t < t_next) {
-        const auto step_start = clock::now();
-        if (model.projection) model.projection->begin_step(t, integrator.state());
-        const double stop = checkpoints.limit(t_next);
-        t = integrator.step(stop);  // checkpoint times are stop times too
-        const ErkStats st = integrator.stats();
-        dt_max = std::max(dt_max, st.last_step);
-        if (scene.dt == 0) check_step_size(t, st.last_step, scene.end, tiny_steps);
-        if (const long r = reflection.apply(integrator.state())) {  // sync point: re-initialise
-          reflections += r;
-          integrator.reset(t);
-        }
-        if (reorder.due(st.steps)) reorder.apply(t, integrator, d0, stepper.split.get());  // sync point: particles by cell
-        checker.check(t, integrator.state());
-        if (st.steps >= scene.max_steps)
-          throw NumericalFailure("time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " +
-                                 std::to_string(t) + " before time.end");
-        progress.step(t, st.steps, st.last_step);
-        if (const int sig = pending_interrupt()) throw Interrupted{sig};
-        stepping += std::chrono::duration<double>(clock::now() - step_start).count();
-        if (t < t_next) checkpoints.at(t, integrator, rhs, frame, reflections);
-      }
-      const long before = rhs.evaluations();
-      ErkStats st = integrator.stats();
-      st.last_step = dt_max;
-      out.write(t, integrator.state(), d0, st);
-      diag_evals += rhs.evaluations() - before;
-      progress.frame(t, st.steps, dt_max);
-      ++frame;
-      if (out.steady() && t < scene.end) {  // time.steady_tolerance: end here as at time.end
-        result.steady_time = t;
-        result.steady_rate = out.steady_rate();
-        break;
-      }
-      checkpoints.at(t, integrator, rhs, frame, reflections);
-    }
-    checkpoints.at_end(t, integrator, frame, reflections);
-    result.checkpoint = checkpoints.path();
-  } catch (const NumericalFailure& e) {
-    result.exit_code = 3;
-    result.message = e.what();
-  } catch (const OutputError& e) {  // disk full, size limit: keep what still fits, exit 5
-    result.exit_code = 5;
-    result.message = e.what();
-    if (result.message.rfind("cannot write " + checkpoints.path() + ":", 0) != 0) {
-      try {
-        result.checkpoint = checkpoints.write(t, integrator, frame, reflections);
-      } catch (const OutputError& again) {
-        result.message += std::string("; ") + again.what();
-      }
-    }
-  } catch (const std::bad_alloc&) {
-    result.exit_code = 6;
-    result.message = "out of memory at t = " + std::to_string(t) + ": an allocation failed while " + activity();
-  } catch (const Interrupted& i) {  // checkpoint at the last completed step, then exit 128 + signal
-    result.exit_code = 128 + i.signal;
-    result.interrupted = true;
-    result.checkpoint = checkpoints.write(t, integrator, frame, reflections);
-    result.message = std::string("interrupted by ") + interrupt_name(i.signal) + " at t = " + std::to_string(t);
+  if (!restarting) out_->write(0.0, y0.data(), d0_, integrator().stats());
+  std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
+  poll_setup_interrupt();
+  rhs.set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
+  set_activity("stepping " + particles);
+}
+
+// The step control and the integrator at t = 0 or at the checkpoint's state (the projection is
+// wired in by make_time_stepper).
+void LocalRun::start_integrator(std::vector<double>& y0) {
+  const Scene& scene = scene_;
+  RhsEvaluator& rhs = *model_.rhs;
+  const StateLayout& layout = rhs.layout();
+  eo_ = integrator_options(scene);
+  eo_.describe_entry = [this](std::size_t i, double v) {
+    return describe_rhs_entry(model_.rhs->layout(), model_.particles.id, i, v);
+  };
+  eo_.stability = [this](double, const double* y) {
+    return stable_step(scene_, model_, max_speed(model_.rhs->layout(), y), model_.rhs->max_acceleration());
+  };
+  eo_.initial_dt = stable_step(scene, model_, max_speed(layout, y0.data()), rhs.max_acceleration());
+  const bool restarting = checkpoints_->restarting();
+  if (restarting) {  // continue from the stored state; d0 stays that of t = 0
+    y0 = checkpoints_->restart().state;
+    eo_.initial_dt = checkpoints_->restart().next_step;
+    rhs.invalidate_neighbors();
+    StateChecker(scene, model_).check(checkpoints_->start_time(), y0.data());  // NaN, blow-up, escape in the file
   }
-  progress.finish();
-  const ErkStats st = integrator.stats();
-  const double wall = std::chrono::duration<double>(clock::now() - wall_start).count();
-  if (scene.reorder_every > 0) out.set_reorders(reorder.count(), reorder.seconds());
-  out.set_stepping_seconds(stepping);
-  out.set_cpu_seconds(checkpoints.earlier_cpu_seconds() + process_cpu_seconds());
+  poll_setup_interrupt();
+  set_activity("creating the time integrator for " + std::to_string(layout.n) + " particles");
+  const long diag_evals_before = rhs.evaluations();
+  // A constrained projection starts from a divergence-free velocity (a restart already is).
+  if (model_.projection && !restarting) model_.projection->project_initial(0.0, y0.data());
+  stepper_ = make_time_stepper(scene, rhs, eo_, y0, checkpoints_->start_time(), model_.projection.get());
+  integrator().set_counter_offset(checkpoints_->counters());
+  if (integrator().workaround_installed()) out_->add_term("erkstep:fsal_bug_workaround");
+  checker_.emplace(scene, model_);
+  reflection_.emplace(scene, layout);
+  reflections_ = restarting ? checkpoints_->restart().wall_reflections : 0;
+  diag_evals_ = rhs.evaluations() - diag_evals_before + 1;
+}
+
+Verdict LocalRun::reflect_and_check(double t, Verdict mine) {
+  if (mine.code) return mine;
+  if (const long r = reflection_->apply(integrator().state())) {  // sync point: re-initialise
+    reflections_ += r;
+    integrator().reset(t);
+  }
   try {
-    out.finish(result, st, wall, diag_evals, reflections, rhs.neighbor_rebuilds());
+    checker_->check(t, integrator().state());
+  } catch (const NumericalFailure& e) {
+    return {3, e.what()};
+  }
+  return mine;
+}
+
+void LocalRun::finish(RunResult& result, double wall, double stepping) {
+  const StepStats st = integrator().stats();
+  if (scene_.reorder_every > 0) out_->set_reorders(reorder_.count(), reorder_.seconds());
+  out_->set_stepping_seconds(stepping);
+  out_->set_cpu_seconds(checkpoints_->earlier_cpu_seconds() + process_cpu_seconds());
+  try {
+    out_->finish(result, st, wall, diag_evals_, reflections_, model_.rhs->neighbor_rebuilds());
   } catch (const OutputError& e) {
     if (result.exit_code == 0 || result.exit_code == 5) {
       result.message = result.exit_code == 0 ? e.what() : result.message + "; " + e.what();
@@ -240,7 +233,15 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
       result.message += std::string("; ") + e.what();
     }
   }
-  return result;
+}
+
+}  // namespace
+
+RunResult run_simulation(const Scene& scene, const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  poll_setup_interrupt();  // set-up polls for a signal between its phases and in its long loops
+  LocalRun run(scene, options);
+  return run_loop(scene, run, options.quiet, wall_start);
 }
 
 }  // namespace arksph

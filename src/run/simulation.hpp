@@ -3,27 +3,9 @@
 #include <string>
 
 #include "core/scene.hpp"
+#include "run/run_result.hpp"
 
 namespace arksph {
-
-struct Checkpoint;  // io/checkpoint.hpp
-
-struct RunOptions {
-  bool quiet = false;        // no progress output
-  bool write_frames = true;  // VTP frames and PVD
-  const Checkpoint* restart = nullptr;  // arksph run --restart: continue from this checkpoint
-  std::string restart_path;             // its file (for messages)
-  bool overwrite = false;  // --overwrite: write into a folder that holds files other than run outputs
-};
-
-struct RunResult {
-  int exit_code = 0;  // 0 ok, 3 numerical failure, 5 output could not be written, 6 out of memory, 128 + signal
-  std::string message;
-  bool interrupted = false;  // SIGHUP/SIGINT/SIGQUIT/SIGTERM: exit code 128 + signal, checkpoint written
-  std::string checkpoint;    // the last checkpoint written ("" if none)
-  double steady_time = -1;   // time.steady_tolerance: the output time at which the run stopped at steady state
-  double steady_rate = 0;    // the steady-state change rate there (diagnostics/steady_state.hpp)
-};
 
 // Runs the scene into scene.directory. Throws InputError for bad input discovered at set-up (also:
 // the folder is locked by another run, holds foreign files, or another run's output on restart),

@@ -6,14 +6,21 @@ TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOp
                               double t0, Projection* projection) {
   TimeStepper ts;
   Projection* constrained = projection && projection->constrained() ? projection : nullptr;
+  if (projection && !constrained) ts.after_step = projection;
   if (!scene.imex) {
+    ErkOptions o = eo;
+    if (ts.after_step) {
+      o.postprocess = [projection](double t, double* y) { projection->project(t, y); };
+      if (scene.projection_points == "stages")
+        o.postprocess_stage = [projection](double t, double* y) { projection->project_stage(t, y); };
+    }
     RhsFunction f = [&rhs](double t, const double* y, double* yd) { rhs.eval(t, y, yd); };
     if (constrained)
       f = [&rhs, constrained](double t, const double* y, double* yd) {
         rhs.eval(t, y, yd);
         constrained->constrain(y, yd, nullptr, nullptr);
       };
-    ts.integrator = std::make_unique<ErkIntegrator>(std::move(f), y0, t0, eo);
+    ts.integrator = std::make_unique<ErkIntegrator>(std::move(f), y0, t0, o);
     return ts;
   }
   ts.split = std::make_unique<ViscousSplit>(scene, rhs);

@@ -17,13 +17,21 @@ namespace arksph {
 struct TimeStepper {
   std::unique_ptr<ViscousSplit> split;  // time.imex only
   std::unique_ptr<TimeIntegrator> integrator;
+  Projection* after_step = nullptr;  // C&R's projection after each step (null: none, or constrained)
+  // One step from t towards `stop`: the projection after each step keeps the positions r^n for
+  // its centring, then the integrator steps (and projects). Returns the time reached.
+  double step(double t, double stop) {
+    if (after_step) after_step->begin_step(t, integrator->state());
+    return integrator->step(stop);
+  }
 };
 
-// `eo`: the ERK options of the run (integrator_options plus stability limit, first step and
-// projection callbacks); the IMEX integrator takes its step control from it (no post-processing:
-// under IMEX a projection must be constrained).
-// `projection`: the run's projection, or null; a constrained one (Projection::constrained) becomes
-// part of f (ERK) or of f_E (IMEX), where it sees the whole acceleration.
+// `eo`: the ERK options of the run (integrator_options plus stability limit and first step); the
+// IMEX integrator takes its step control from it.
+// `projection`: the run's projection, or null. C&R's projection runs after each step (and after
+// each stage with method.projection_points = "stages"); a constrained one
+// (Projection::constrained) becomes part of f (ERK) or of f_E (IMEX), where it sees the whole
+// acceleration (under IMEX a projection must be constrained: no post-processing).
 TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
                               double t0, Projection* projection = nullptr);
 

@@ -85,19 +85,11 @@ RunEnd run_scene(const Scene& base, const std::string& table, double dt, long* r
   o.fixed_dt = dt;
   o.rtol = scene.rtol;  // fixed steps: no error control; IMEX: the Newton tolerance scales with these
   o.atol = scene.atol;
-  Projection* proj = model.projection.get();
-  if (proj) proj->project_initial(0.0, y0.data());
-  if (proj && proj->constrained()) proj = nullptr;  // part of f: nothing after a step
-  if (proj) o.postprocess = [proj](double t, double* y) { proj->project(t, y); };
-  if (proj && scene.projection_points == "stages")
-    o.postprocess_stage = [proj](double t, double* y) { proj->project_stage(t, y); };
+  if (model.projection) model.projection->project_initial(0.0, y0.data());
   TimeStepper stepper = make_time_stepper(scene, *model.rhs, o, y0, 0.0, model.projection.get());
   TimeIntegrator& integ = *stepper.integrator;
   double t = 0;
-  while (t < scene.end) {  // the run loop's step: remember r^n for the centring, step, project
-    if (proj) proj->begin_step(t, integ.state());
-    t = integ.step(scene.end);
-  }
+  while (t < scene.end) t = stepper.step(t, scene.end);  // the run loop's step, projection included
   if (rhs_evals) *rhs_evals = integ.stats().rhs_evals + integ.stats().implicit_rhs_evals;
   RunEnd end;
   end.state.assign(integ.state(), integ.state() + integ.size());

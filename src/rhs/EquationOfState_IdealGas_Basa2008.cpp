@@ -25,9 +25,14 @@ class EquationOfStateIdealGas final : public Term {
 
 std::unique_ptr<Term> make_eos_ideal_gas(double gamma) { return std::make_unique<EquationOfStateIdealGas>(gamma); }
 
-Part<TermFactory> equation_of_state_ideal_gas() {
+Part<EquationOfStateFactory> equation_of_state_ideal_gas() {
   return {"ideal_gas", "ideal gas p = (gamma - 1) rho e, with the energy equation in the state (Basa et al. 2008 eqs. 12, 14)",
-          nullptr,
+          [](const Scene& scene, double) {
+            std::vector<std::unique_ptr<Term>> terms;
+            terms.push_back(make_eos_ideal_gas(scene.gas_gamma));
+            terms.push_back(make_energy_equation());
+            return terms;
+          },
           {number("method.gas_gamma", 1.4).in(above(1))
                .doc("ideal_gas: ratio of specific heats; e(0) is chosen so that the sound speed is method.sound_speed")
                .to(&Scene::gas_gamma)},

@@ -43,10 +43,15 @@ std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma, double bac
   return std::make_unique<EquationOfStateTait>(sound_speed, gamma, background);
 }
 
-// Tait's parameters; method.sound_speed is resolved at set-up (resolve_sound_speed) and
-// terms_from_scene builds the term with it.
-Part<TermFactory> equation_of_state_tait() {
-  return {"tait", "Tait equation of state (Cummins & Rudman 1999 eq. 7, Basa et al. 2008 eq. 13)", nullptr,
+// Tait's parameters; method.sound_speed is resolved at set-up (resolve_sound_speed), and the
+// factory is given the result.
+Part<EquationOfStateFactory> equation_of_state_tait() {
+  return {"tait", "Tait equation of state (Cummins & Rudman 1999 eq. 7, Basa et al. 2008 eq. 13)",
+          [](const Scene& scene, double sound_speed) {
+            std::vector<std::unique_ptr<Term>> terms;
+            terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma, scene.background_pressure));
+            return terms;
+          },
           {number("method.sound_speed", 0.0).in(at_least(0)).unit("m/s").schemes({"wcsph"})
                .doc("WCSPH sound speed c0; 0: 10 x the reference speed (walls, initial speeds, sqrt(|g| L))")
                .to(&Scene::sound_speed),

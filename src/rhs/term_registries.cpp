@@ -14,8 +14,8 @@ Part<TermFactory> pressure_gradient_monaghan();
 Part<TermFactory> kernel_correction_none();
 Part<TermFactory> kernel_correction_shepard();
 Part<TermFactory> kernel_correction_bonet_lok();
-Part<TermFactory> equation_of_state_tait();
-Part<TermFactory> equation_of_state_ideal_gas();
+Part<EquationOfStateFactory> equation_of_state_tait();
+Part<EquationOfStateFactory> equation_of_state_ideal_gas();
 Part<TermFactory> density_continuity();
 Part<TermFactory> density_summation();
 Part<TermFactory> regularisation_none();
@@ -55,8 +55,8 @@ const Registry<TermFactory>& kernel_corrections() {
   return r;
 }
 
-const Registry<TermFactory>& equations_of_state() {
-  static const Registry<TermFactory> r("equation_of_state", "method.equation_of_state", {
+const Registry<EquationOfStateFactory>& equations_of_state() {
+  static const Registry<EquationOfStateFactory> r("equation_of_state", "method.equation_of_state", {
       equation_of_state_tait(),
       equation_of_state_ideal_gas(),
   });

@@ -42,12 +42,7 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
   // Basa et al. 2008 §4: corrected kernel gradients for the pressure and viscous terms.
   if (const auto& part = kernel_corrections().at(scene.kernel_correction); part.make) terms.push_back(build(part, scene));
   if (wcsph) {
-    if (scene.equation_of_state == "ideal_gas") {
-      terms.push_back(make_eos_ideal_gas(scene.gas_gamma));
-      terms.push_back(make_energy_equation());
-    } else {
-      terms.push_back(make_eos_tait(sound_speed, scene.tait_gamma, scene.background_pressure));
-    }
+    for (auto& t : equations_of_state().at(scene.equation_of_state).make(scene, sound_speed)) terms.push_back(std::move(t));
     if (scene.pressure_reduction) terms.push_back(make_pressure_reduction());  // Basa eq. 20
     terms.push_back(build(pressure_gradients().at(scene.pressure_gradient), scene));
     if (scene.density_mode == "continuity") terms.push_back(make_continuity());

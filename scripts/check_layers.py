@@ -2,8 +2,10 @@
 """Checks the include directions between the folders of src/ (docs/architecture.md).
 
 Each folder of src/ is a layer; a file may include headers of its own layer and of the layers
-below it, never of a layer above. Exit 0 when every include respects the order, 1 otherwise (each
-offending include is printed as file:line: text).
+below it, never of a layer above. A layer's subfolders (one per family of parts) belong to it and
+are listed in SUBFOLDERS; a subfolder not listed there is reported. Exit 0 when every include
+respects the order and every folder is placed, 1 otherwise (each offending include is printed as
+file:line: text).
 """
 import pathlib
 import re
@@ -12,6 +14,11 @@ import sys
 # Bottom to top.
 LAYERS = ["core", "kernels", "neighbors", "boundary", "parallel", "rhs", "integrate", "projection",
           "distributed_ppe", "diagnostics", "io", "run", "distributed", "study", "app"]
+# The families of a layer with a folder of their own.
+SUBFOLDERS = {
+    "rhs": ["density", "pressure", "regularisation", "viscosity"],
+    "projection": ["correction", "grid", "poisson"],
+}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 
 
@@ -23,6 +30,11 @@ def main() -> int:
     for folder in folders:
         if folder not in rank:
             problems.append(f"src/{folder}: folder not placed in a layer (scripts/check_layers.py LAYERS)")
+        elif (src / folder).is_dir():
+            for sub in sorted(p for p in (src / folder).rglob("*") if p.is_dir()):
+                name = sub.relative_to(src / folder).as_posix()
+                if name not in SUBFOLDERS.get(folder, []):
+                    problems.append(f"src/{folder}/{name}: subfolder not listed (scripts/check_layers.py SUBFOLDERS)")
     for path in sorted(src.rglob("*")):
         if path.suffix not in (".hpp", ".cpp", ".h"):
             continue

@@ -9,7 +9,7 @@ std::unique_ptr<Term> make_continuity() { return std::make_unique<ContinuitySzew
 
 Part<TermFactory> density_continuity() {
   return {"continuity", "density from the continuity equation in the ODE state (Szewc et al. 2012 eq. 19)",
-          nullptr, {}, {.state = {"density"}}};
+          [](const Scene&) { return make_continuity(); }, {}, {.state = {"density"}}};
 }
 
 }  // namespace arksph

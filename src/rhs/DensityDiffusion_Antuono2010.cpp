@@ -9,6 +9,7 @@
 // along axes bounded by walls count (along a periodic axis there is no hydrostatic balance). A wall
 // image carries its source's density, so for it r_ab is taken from its source: the image's density
 // is the source's hydrostatic one, not that of the image's own depth.
+#include "core/errors.hpp"
 #include "core/expression.hpp"
 #include "core/param_builder.hpp"
 #include "rhs/density_diffusion_sum.hpp"
@@ -75,13 +76,21 @@ std::unique_ptr<Term> make_density_diffusion(const Scene& s, double sound_speed)
                                             g[0], g[1]);
 }
 
-Part<TermFactory> density_diffusion_none() { return {"none", "no density diffusion"}; }
+Part<CompressibleTermsFactory> density_diffusion_none() { return {"none", "no density diffusion"}; }
 
-Part<TermFactory> density_diffusion_delta_sph() {
+// The diffusion acts on the continuity equation: refused with a density that is not in the state.
+Part<CompressibleTermsFactory> density_diffusion_delta_sph() {
   return {"delta_sph",
           "delta-SPH diffusion in the continuity equation (Antuono et al. 2010 eq. 4, Molteni & Colagrossi 2009), "
           "hydrostatic part left out",
-          nullptr,
+          [](const Scene& scene, double sound_speed) {
+            if (!density_modes().at(scene.density_mode).traits.adds_state("density"))
+              throw InputError("method.density_diffusion: \"delta_sph\" needs method.density_mode = \"continuity\" (got \"" +
+                               scene.density_mode + "\")");
+            std::vector<std::unique_ptr<Term>> terms;
+            terms.push_back(make_density_diffusion(scene, sound_speed));
+            return terms;
+          },
           {number("method.delta_sph_coefficient", 0.1).in(at_least(0))
                .doc("delta of the delta-SPH diffusive term (Antuono et al. 2010: 0.1)")},
           {.schemes = {"wcsph"}}};

@@ -24,7 +24,8 @@ class DensitySummation final : public Term {
 std::unique_ptr<Term> make_density_summation() { return std::make_unique<DensitySummation>(); }
 
 Part<TermFactory> density_summation() {
-  return {"summation", "density by kernel summation over the neighbours (Szewc et al. 2012 eq. 21)"};
+  return {"summation", "density by kernel summation over the neighbours (Szewc et al. 2012 eq. 21)",
+          [](const Scene&) { return make_density_summation(); }};
 }
 
 }  // namespace arksph

@@ -25,7 +25,7 @@ class EquationOfStateIdealGas final : public Term {
 
 std::unique_ptr<Term> make_eos_ideal_gas(double gamma) { return std::make_unique<EquationOfStateIdealGas>(gamma); }
 
-Part<EquationOfStateFactory> equation_of_state_ideal_gas() {
+Part<CompressibleTermsFactory> equation_of_state_ideal_gas() {
   return {"ideal_gas", "ideal gas p = (gamma - 1) rho e, with the energy equation in the state (Basa et al. 2008 eqs. 12, 14)",
           [](const Scene& scene, double) {
             std::vector<std::unique_ptr<Term>> terms;

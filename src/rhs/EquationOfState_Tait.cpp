@@ -45,7 +45,7 @@ std::unique_ptr<Term> make_eos_tait(double sound_speed, double gamma, double bac
 
 // Tait's parameters; method.sound_speed is resolved at set-up (resolve_sound_speed), and the
 // factory is given the result.
-Part<EquationOfStateFactory> equation_of_state_tait() {
+Part<CompressibleTermsFactory> equation_of_state_tait() {
   return {"tait", "Tait equation of state (Cummins & Rudman 1999 eq. 7, Basa et al. 2008 eq. 13)",
           [](const Scene& scene, double sound_speed) {
             std::vector<std::unique_ptr<Term>> terms;

@@ -14,15 +14,15 @@ Part<TermFactory> pressure_gradient_monaghan();
 Part<TermFactory> kernel_correction_none();
 Part<TermFactory> kernel_correction_shepard();
 Part<TermFactory> kernel_correction_bonet_lok();
-Part<EquationOfStateFactory> equation_of_state_tait();
-Part<EquationOfStateFactory> equation_of_state_ideal_gas();
+Part<CompressibleTermsFactory> equation_of_state_tait();
+Part<CompressibleTermsFactory> equation_of_state_ideal_gas();
 Part<TermFactory> density_continuity();
 Part<TermFactory> density_summation();
 Part<TermFactory> regularisation_none();
 Part<TermFactory> regularisation_shifting();
 Part<TermFactory> regularisation_transport_velocity();
-Part<TermFactory> density_diffusion_none();
-Part<TermFactory> density_diffusion_delta_sph();
+Part<CompressibleTermsFactory> density_diffusion_none();
+Part<CompressibleTermsFactory> density_diffusion_delta_sph();
 Part<TermFactory> wall_force_none();
 Part<TermFactory> wall_force_lennard_jones();
 
@@ -55,8 +55,8 @@ const Registry<TermFactory>& kernel_corrections() {
   return r;
 }
 
-const Registry<EquationOfStateFactory>& equations_of_state() {
-  static const Registry<EquationOfStateFactory> r("equation_of_state", "method.equation_of_state", {
+const Registry<CompressibleTermsFactory>& equations_of_state() {
+  static const Registry<CompressibleTermsFactory> r("equation_of_state", "method.equation_of_state", {
       equation_of_state_tait(),
       equation_of_state_ideal_gas(),
   });
@@ -80,8 +80,8 @@ const Registry<TermFactory>& regularisations() {
   return r;
 }
 
-const Registry<TermFactory>& density_diffusions() {
-  static const Registry<TermFactory> r("density_diffusion", "method.density_diffusion", {
+const Registry<CompressibleTermsFactory>& density_diffusions() {
+  static const Registry<CompressibleTermsFactory> r("density_diffusion", "method.density_diffusion", {
       density_diffusion_none(),
       density_diffusion_delta_sph(),
   });

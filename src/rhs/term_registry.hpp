@@ -13,19 +13,20 @@ namespace arksph {
 
 // Builds a part's term from the resolved scene (its parameters included).
 using TermFactory = std::unique_ptr<Term> (*)(const Scene&);
-// Builds an equation of state's terms (the pressure, and what it needs in the state, such as the
-// energy equation) from the resolved scene and the sound speed resolved at set-up.
-using EquationOfStateFactory = std::vector<std::unique_ptr<Term>> (*)(const Scene&, double sound_speed);
+// Builds the terms of a weakly compressible part from the resolved scene and the sound speed
+// resolved at set-up: an equation of state (the pressure, and what it needs in the state, such as
+// the energy equation), density diffusion.
+using CompressibleTermsFactory = std::vector<std::unique_ptr<Term>> (*)(const Scene&, double sound_speed);
 
 const Registry<TermFactory>& viscosity_models();    // method.viscosity_model
 const Registry<TermFactory>& pressure_gradients();  // method.pressure_gradient
 const Registry<TermFactory>& kernel_corrections();  // method.kernel_correction ("none": no factory)
-const Registry<EquationOfStateFactory>& equations_of_state();  // method.equation_of_state
-// Selected by name, built by terms_from_scene: no factories.
+const Registry<CompressibleTermsFactory>& equations_of_state();  // method.equation_of_state
+// Trait .state = {"density"}: the density in the ODE state (a rate, built after the pressure
+// gradient); else a density computed before the terms that read it.
 const Registry<TermFactory>& density_modes();       // method.density_mode
 const Registry<TermFactory>& regularisations();     // method.regularisation ("none": no factory)
-// Built by terms_from_scene with the resolved sound speed (make_density_diffusion).
-const Registry<TermFactory>& density_diffusions();  // method.density_diffusion
+const Registry<CompressibleTermsFactory>& density_diffusions();  // method.density_diffusion ("none": no factory)
 const Registry<TermFactory>& wall_forces();         // boundary.wall_force ("none": no factory)
 
 }  // namespace arksph

@@ -38,20 +38,18 @@ double resolve_sound_speed(const Scene& scene, double max_initial_speed) {
 std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double sound_speed) {
   std::vector<std::unique_ptr<Term>> terms;
   const bool wcsph = scheme_traits(scene.scheme).weakly_compressible;
-  if (scene.density_mode == "summation") terms.push_back(make_density_summation());
+  const auto& density = density_modes().at(scene.density_mode);
+  const bool density_in_state = density.traits.adds_state("density");
+  if (!density_in_state) terms.push_back(build(density, scene));  // before the terms that read rho
   // Basa et al. 2008 §4: corrected kernel gradients for the pressure and viscous terms.
   if (const auto& part = kernel_corrections().at(scene.kernel_correction); part.make) terms.push_back(build(part, scene));
   if (wcsph) {
     for (auto& t : equations_of_state().at(scene.equation_of_state).make(scene, sound_speed)) terms.push_back(std::move(t));
     if (scene.pressure_reduction) terms.push_back(make_pressure_reduction());  // Basa eq. 20
     terms.push_back(build(pressure_gradients().at(scene.pressure_gradient), scene));
-    if (scene.density_mode == "continuity") terms.push_back(make_continuity());
-    if (scene.density_diffusion == "delta_sph") {
-      if (scene.density_mode != "continuity")
-        throw InputError("method.density_diffusion: \"delta_sph\" needs method.density_mode = \"continuity\" (got \"" +
-                         scene.density_mode + "\")");
-      terms.push_back(make_density_diffusion(scene, sound_speed));
-    }
+    if (density_in_state) terms.push_back(build(density, scene));  // a rate: Szewc eq. 19
+    if (const auto& part = density_diffusions().at(scene.density_diffusion); part.make)
+      for (auto& t : part.make(scene, sound_speed)) terms.push_back(std::move(t));
   }
   // Particle regularisation: a velocity in dr/dt and the corrections of the carried fields.
   if (const auto& part = regularisations().at(scene.regularisation); part.make) terms.push_back(build(part, scene));

@@ -23,7 +23,7 @@
 
 #include "distributed_ppe/hypre_poisson.hpp"
 #include "ppe_fixture.hpp"
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 
 using namespace arksph;
 using namespace arksph::parallel;

@@ -4,8 +4,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.hpp"
-#include "projection/amg_hierarchy.hpp"
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/amg_hierarchy.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph::bench {

@@ -16,7 +16,7 @@
 //      ydot -= G p (C&R eq. 11, wall points at P_src + rho g . d).
 // The start (project_velocity) is one approximate projection u <- u - G phi, L phi = D u, as in one
 // process. With method.density_correction = "pozorski_wawrenczuk" the correction is the velocity of
-// projection/density_relaxation.hpp added to dr/dt, its Newton direction over the ranks
+// projection/correction/density_relaxation.hpp added to dr/dt, its Newton direction over the ranks
 // (rank_correction_span, as the step-wise correction's). The orthogonal projection is one process's
 // (refused on ranks by check_distributable).
 #pragma once
@@ -30,7 +30,7 @@
 #include "distributed/rank_particles.hpp"
 #include "parallel/communicator.hpp"
 #include "projection/body_force_split.hpp"
-#include "projection/density_relaxation.hpp"
+#include "projection/correction/density_relaxation.hpp"
 
 namespace arksph::distributed {
 

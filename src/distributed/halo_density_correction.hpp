@@ -2,7 +2,7 @@
 // decomposed run, after each step's projection (halo_projection.hpp), as DensityCorrection does
 // after one process's: when the r.m.s. fluctuation of the summation density over all particles
 // exceeds method.correction_threshold, Newton steps with the exact derivative of the summation
-// density (projection/correction_newton.hpp) move the rank's particles. The iteration is one
+// density (projection/correction/correction_newton.hpp) move the rank's particles. The iteration is one
 // process's, run over a CorrectionSpan: sums (means, r.m.s., BiCGSTAB's inner products) over the
 // ranks, the potential p and the shifts of the rank's particles handed to their halo copies before
 // a pair loop reads them, the Jacobi preconditioner's median over every rank's diagonal. Every
@@ -22,8 +22,8 @@
 #include "distributed/halo_rhs.hpp"
 #include "distributed/rank_particles.hpp"
 #include "parallel/communicator.hpp"
-#include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
-#include "projection/correction_newton.hpp"
+#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/correction/correction_newton.hpp"
 
 namespace arksph::distributed {
 

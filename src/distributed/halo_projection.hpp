@@ -46,7 +46,7 @@
 #include "distributed/rank_particles.hpp"
 #include "parallel/communicator.hpp"
 #include "projection/body_force_split.hpp"
-#include "projection/ProjectionGrid_Szewc2012.hpp"
+#include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/projection.hpp"
 
 namespace arksph::distributed {

@@ -9,7 +9,7 @@
 // preconditioned one), the test of the one-process iterative solvers with the same tolerance
 // (method.ppe_tolerance). A zero source gives p = 0 with no iteration, as cg_amg does.
 //
-// Reuse across solves, the rule of the one-process cg_amg (projection/PoissonSolver_AmgCg.cpp): the
+// Reuse across solves, the rule of the one-process cg_amg (projection/poisson/PoissonSolver_AmgCg.cpp): the
 // particles move a fraction of a spacing per step, so the BoomerAMG hierarchy set up on one step's
 // matrix serves the next ones. A solve that reuses it hands PCG and the V-cycle the new matrix
 // (hypre_BoomerAMGSolve takes its finest level from the matrix it is given); the coarse levels,
@@ -24,7 +24,7 @@
 
 #include "distributed_ppe/ppe_rows.hpp"
 #include "parallel/communicator.hpp"
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 
 namespace arksph::distributed_ppe {
 

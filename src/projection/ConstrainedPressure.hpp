@@ -32,14 +32,14 @@
 // C&R's mirrored P in G cannot balance.
 //
 // With method.density_correction = "pozorski_wawrenczuk" the correction is a velocity in dr/dt as well
-// (projection/density_relaxation.hpp), so positions stay inside the ODE.
+// (projection/correction/density_relaxation.hpp), so positions stay inside the ODE.
 //
 // The exact orthogonal projection I - G (D G)^-1 D with G = -M^-1 D^T V (DivergenceOperator) is
 // idempotent, but D G decouples odd and even particles: on a perturbed lattice it has near-null
 // modes, and a constraint imposed through it moves the velocity by O(|u|) (docs/methods/isph.md).
 //
 // method.projection = "orthogonal" takes that exact pair on a coarse pressure space instead
-// (projection/coarse_pressure_space.hpp): p = Pi q, cubic B-splines on a grid of spacing
+// (projection/poisson/coarse_pressure_space.hpp): p = Pi q, cubic B-splines on a grid of spacing
 // method.orthogonal_spacing x dx, G the adjoint gradient -M^-1 D^T V, and
 //
 //   du/dt = a* - G Pi q,   K_c q = -(Pi^T V D (a* + alpha u - C) + E),   K_c = Pi^T K Pi,
@@ -57,10 +57,10 @@
 
 #include "core/scene.hpp"
 #include "projection/body_force_split.hpp"
-#include "projection/coarse_pressure_space.hpp"
+#include "projection/poisson/coarse_pressure_space.hpp"
 #include "projection/divergence_operator.hpp"
-#include "projection/density_relaxation.hpp"
-#include "projection/poisson_solver.hpp"
+#include "projection/correction/density_relaxation.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
 

@@ -22,7 +22,7 @@
 
 #include <Eigen/SparseCore>
 
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {

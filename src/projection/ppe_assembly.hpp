@@ -15,7 +15,7 @@
 #pragma once
 #include <vector>
 
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {

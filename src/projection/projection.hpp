@@ -18,10 +18,10 @@
 
 #include "core/scene.hpp"
 #include "projection/ConstrainedPressure.hpp"
-#include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
-#include "projection/ProjectionGrid_Szewc2012.hpp"
+#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/body_force_split.hpp"
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "rhs/evaluator.hpp"
 

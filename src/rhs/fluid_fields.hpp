@@ -60,7 +60,7 @@ struct FluidFields {
   std::vector<double> e, dedt;
 
   // Regularisation velocity du_s of the particle regularisation parts: the particles move with
-  // dr/dt = u + du_s (rhs/Shifting_Lind2012.cpp, rhs/TransportVelocity_Adami2013.cpp). Sized to the
+  // dr/dt = u + du_s (rhs/regularisation/Shifting_Lind2012.cpp, rhs/regularisation/TransportVelocity_Adami2013.cpp). Sized to the
   // real particles and zeroed at every f when such a part is on (a part may extend it to the
   // ghosts); empty otherwise.
   std::vector<double> shift_u, shift_v;

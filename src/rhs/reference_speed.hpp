@@ -1,7 +1,7 @@
 // The speed scales of a scene. The reference speed: the largest of the wall speeds, the initial
 // speeds and sqrt(|f| L) (f the body force at the box centre, L the largest box length); times ten,
 // the default WCSPH sound speed. The flow speed: the largest wall or initial speed only, the scale
-// of the regularisation velocities (rhs/Shifting_Lind2012.cpp, rhs/TransportVelocity_Adami2013.cpp):
+// of the regularisation velocities (rhs/regularisation/Shifting_Lind2012.cpp, rhs/regularisation/TransportVelocity_Adami2013.cpp):
 // a fluid that starts at rest between walls at rest (a tank under gravity) is not shifted.
 #pragma once
 #include "core/scene.hpp"

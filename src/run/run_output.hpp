@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "projection/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "run/setup.hpp"
 #include "run/run_result.hpp"
 #include "diagnostics/flow_metrics.hpp"

@@ -9,7 +9,7 @@
 #include "core/expression.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
-#include "rhs/initial_density.hpp"
+#include "rhs/density/initial_density.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"

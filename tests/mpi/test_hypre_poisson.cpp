@@ -9,7 +9,7 @@
 
 #include "distributed_ppe/hypre_poisson.hpp"
 #include "ppe_compare.hpp"
-#include "projection/poisson_solver.hpp"
+#include "projection/poisson/poisson_solver.hpp"
 
 using namespace arksph;
 using namespace arksph::parallel;

@@ -15,8 +15,8 @@
 #include "core/errors.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/ConstrainedPressure.hpp"
-#include "projection/coarse_pressure_space.hpp"
-#include "projection/correction_newton.hpp"
+#include "projection/poisson/coarse_pressure_space.hpp"
+#include "projection/correction/correction_newton.hpp"
 #include "projection/divergence_operator.hpp"
 #include "run/setup.hpp"
 #include "run/time_stepper.hpp"
@@ -202,7 +202,7 @@ TEST_CASE("constrained projection: with the P-W correction's velocity the orders
   }
 }
 
-// The orthogonal projection (method.projection = "orthogonal", projection/coarse_pressure_space.hpp)
+// The orthogonal projection (method.projection = "orthogonal", projection/poisson/coarse_pressure_space.hpp)
 // applied twice to a random field on the vortex's particles shaken by 0.2 dx: the second
 // application changes nothing but round-off, and the coarse divergence Pi^T V D of the projected
 // field is zero to round-off. Bound 1e-12: the dense LDLT of K_c (11 x 11 nodes periodic, 12 x 12 with walls, less the

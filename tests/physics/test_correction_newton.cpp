@@ -1,4 +1,4 @@
-// The Newton form of the Pozorski-Wawrenczuk correction (projection/correction_newton.hpp): its
+// The Newton form of the Pozorski-Wawrenczuk correction (projection/correction/correction_newton.hpp): its
 // Jacobian against finite differences, and what one step does on Szewc's Fig. 15 lattice.
 #include <doctest/doctest.h>
 
@@ -9,7 +9,7 @@
 
 #include "run/setup.hpp"
 #include "io/scene_reader.hpp"
-#include "projection/correction_newton.hpp"
+#include "projection/correction/correction_newton.hpp"
 #include "projection/projection.hpp"
 
 using namespace arksph;

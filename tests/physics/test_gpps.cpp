@@ -10,8 +10,8 @@
 
 #include "run/setup.hpp"
 #include "io/scene_reader.hpp"
-#include "projection/grid_poisson.hpp"
-#include "projection/grid_transfer.hpp"
+#include "projection/grid/grid_poisson.hpp"
+#include "projection/grid/grid_transfer.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "test_support.hpp"
 

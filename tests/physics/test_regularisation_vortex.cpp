@@ -36,7 +36,7 @@ TEST_CASE("regularisation: shifting brings the Taylor-Green vortex to its exact 
   }
 }
 
-// Shifting's own step limit (Term::max_step, rhs/shifting_stability.hpp) on the same vortex with ISPH
+// Shifting's own step limit (Term::max_step, rhs/regularisation/shifting_stability.hpp) on the same vortex with ISPH
 // and the default shifting (A = 12): fixed steps of 0.9 times the limit against twice the limit, where
 // the fastest shifting mode has rate * dt = 3, past the reach 2 of Heun-Euler. Measured at t = 0.5:
 // 0.0085 within the limit, 0.025 at twice it (0.038 at three times it). The bounds: within the

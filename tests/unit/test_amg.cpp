@@ -9,7 +9,7 @@
 
 #include "run/setup.hpp"
 #include "io/scene_reader.hpp"
-#include "projection/amg_hierarchy.hpp"
+#include "projection/poisson/amg_hierarchy.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "test_support.hpp"
 

@@ -119,7 +119,7 @@ TEST_CASE("shifting: zero on the lattice, -A h U grad C on a compressed one") {
   CHECK(worst_v <= 1e-12 * amplitude);
 }
 
-// The step limit of shifting (rhs/shifting_stability.hpp) rests on the fastest decay rate of the
+// The step limit of shifting (rhs/regularisation/shifting_stability.hpp) rests on the fastest decay rate of the
 // linearised shifting velocity over the lattice's Fourier modes. Brute force on the real term: power
 // iteration on the map from a displacement field d to the shift velocity of the displaced lattice,
 // (du(r0 + eps d) - du(r0 - eps d)) / (2 eps), whose largest eigenvalue in magnitude is that rate (the

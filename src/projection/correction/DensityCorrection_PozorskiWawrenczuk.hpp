@@ -1,0 +1,62 @@
+// Pozorski-Wawrenczuk position correction, Szewc et al. 2012 §9 (eqs. 57-59).
+//
+// After the projection, the summation density (Szewc eq. 21) rho~_a = m_a sum_b W_ab drifts from
+// rho0. Positions are shifted by r_a <- r_a - grad p*_a / rho0 (eq. 57), with p* from
+//   (1/rho0) div((rho^n/rho0) grad p*) = 1 - rho~_a/rho0                          (eq. 58).
+// Discretised with the approximate Laplacian of C&R eq. 19 at rho^n = rho0 (so the left side is
+// L(p*) of ppe_assembly.hpp), the mean of the source removed (a closed box cannot change its mean
+// density by moving particles), ghosts carrying their source's p* (Neumann walls), and the
+// gradient in difference form sum_b V_b (p*_b - p*_a) grad_a W_ab, which vanishes for constant p*.
+// Applied when the r.m.s. relative density error exceeds a threshold, up to a number of iterations
+// per step (Szewc apply it once per step).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/registry.hpp"
+#include "core/scene.hpp"
+#include "projection/poisson/poisson_solver.hpp"
+#include "rhs/evaluator.hpp"
+
+namespace arksph {
+
+// method.density_correction: "none" | "pozorski_wawrenczuk", with the correction's parameters.
+const Registry<Selected>& density_corrections();
+// method.correction_solver: how the correction's Poisson problem is solved.
+const Registry<Selected>& correction_solvers();
+
+struct CorrectionStats {
+  long applications = 0;   // steps in which it ran
+  long iterations = 0;     // Poisson solves
+  double seconds = 0;
+  std::vector<double> first_history;  // r.m.s. relative density error before each iteration of the first application, and after the last
+};
+
+class DensityCorrection {
+ public:
+  DensityCorrection(const Scene& scene, RhsEvaluator& rhs);
+  // Corrects the positions in y (time t) in place.
+  void apply(double t, double* y);
+  const CorrectionStats& stats() const { return stats_; }
+  // The particles re-ordered: the warm start p* follows (new index i is old index from[i]).
+  void permute_particles(const std::vector<std::uint32_t>& from);
+  void forget_warm_start() {
+    pstar_.clear();
+    solver_ = make_poisson_solver(solver_->name(), tolerance_);
+  }
+
+ private:
+  double density_error(double t, const double* y);  // refreshes fields; r.m.s. of rho~/rho0 about its mean
+  RhsEvaluator& rhs_;
+  std::unique_ptr<PoissonSolver> solver_;
+  double tolerance_;
+  double threshold_;
+  int max_iterations_;
+  bool use_kinsol_;
+  bool use_newton_;
+  double spacing_;
+  std::vector<double> pstar_;
+  CorrectionStats stats_;
+};
+
+}  // namespace arksph

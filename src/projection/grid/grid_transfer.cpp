@@ -1,0 +1,101 @@
+#include "projection/grid/grid_transfer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace arksph {
+
+namespace {
+// The two cell indices bracketing coordinate s along an axis of n cells, and the weight of the upper.
+void axis_weights(double s, double origin, double h, int n, bool periodic, int& i0, int& i1, double& w1) {
+  if (n == 1) {
+    i0 = i1 = 0;
+    w1 = 0;
+    return;
+  }
+  const double f = (s - origin) / h - 0.5;
+  const double fl = std::floor(f);
+  w1 = f - fl;
+  i0 = static_cast<int>(fl);
+  i1 = i0 + 1;
+  if (periodic) {
+    i0 = ((i0 % n) + n) % n;
+    i1 = ((i1 % n) + n) % n;
+  } else {
+    if (i0 < 0) { i0 = 0; i1 = 0; w1 = 0; }
+    if (i1 > n - 1) { i0 = n - 1; i1 = n - 1; w1 = 0; }
+  }
+}
+}  // namespace
+
+CellWeights cell_weights(const GridSpec& g, double x, double y) {
+  int i0, i1, j0, j1;
+  double wx, wy;
+  axis_weights(x, g.x0, g.h, g.nx, g.periodic[0], i0, i1, wx);
+  axis_weights(y, g.y0, g.h, g.ny, g.periodic[1], j0, j1, wy);
+  CellWeights c;
+  c.cell[0] = g.index(i0, j0);
+  c.cell[1] = g.index(i1, j0);
+  c.cell[2] = g.index(i0, j1);
+  c.cell[3] = g.index(i1, j1);
+  c.w[0] = (1 - wx) * (1 - wy);
+  c.w[1] = wx * (1 - wy);
+  c.w[2] = (1 - wx) * wy;
+  c.w[3] = wx * wy;
+  return c;
+}
+
+DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                         const double* q) {
+  const std::size_t nc = g.cells();
+  DepositSums d;
+  d.value.assign(nc, 0.0);
+  d.weight.assign(nc, 0.0);
+  d.lo.assign(nc, HUGE_VAL);
+  d.hi.assign(nc, -HUGE_VAL);
+  for (std::size_t a = 0; a < n; ++a) {
+    const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
+    for (int k = 0; k < 4; ++k) {
+      if (c.w[k] == 0) continue;
+      const double wv = c.w[k] * volume[a];
+      d.value[c.cell[k]] += wv * q[a];
+      d.weight[c.cell[k]] += wv;
+      d.lo[c.cell[k]] = std::min(d.lo[c.cell[k]], q[a]);
+      d.hi[c.cell[k]] = std::max(d.hi[c.cell[k]], q[a]);
+    }
+  }
+  return d;
+}
+
+GridDeposit finish_deposit(DepositSums&& s, double fallback) {
+  GridDeposit d;
+  d.value = std::move(s.value);
+  d.weight = std::move(s.weight);
+  for (std::size_t i = 0; i < d.value.size(); ++i) {
+    if (d.weight[i] <= 0)
+      d.value[i] = fallback;
+    else if (s.lo[i] == s.hi[i])
+      d.value[i] = s.lo[i];
+    else
+      d.value[i] /= d.weight[i];
+  }
+  return d;
+}
+
+GridDeposit deposit(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                    const double* q, double fallback) {
+  return finish_deposit(deposit_sums(g, n, x, y, volume, q), fallback);
+}
+
+std::vector<double> interpolate(const GridSpec& g, std::size_t n, const double* x, const double* y,
+                                const std::vector<double>& field) {
+  std::vector<double> out(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
+    out[a] = c.w[0] * field[c.cell[0]] + c.w[1] * field[c.cell[1]] + c.w[2] * field[c.cell[2]] + c.w[3] * field[c.cell[3]];
+  }
+  return out;
+}
+
+}  // namespace arksph

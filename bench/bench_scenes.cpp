@@ -24,8 +24,7 @@ Scene periodic_box(int n, const std::string& scheme, const std::vector<std::stri
 }
 
 Prepared prepare(int n, const std::string& scheme, const std::vector<std::string>& sets) {
-  Prepared p;
-  p.scene = periodic_box(n, scheme, sets);
+  Prepared p{.scene = periodic_box(n, scheme, sets)};
   p.model = build_model(p.scene);
   p.y.assign(p.model.rhs->layout().size(), 0.0);
   p.ydot.assign(p.y.size(), 0.0);

@@ -45,7 +45,9 @@ struct Param {
   };
   std::string key;     // dotted scene key, e.g. "method.cleary_xi"
   Type type = Type::number;
-  ParamValue fallback;  // the default ("auto" when `automatic` is set); unused when `required` is set
+  // The default, the only place it is written ("auto" when `automatic` is set); for a `required` key
+  // the value of scene_defaults() (io/scene_defaults.hpp), which a file must set.
+  ParamValue fallback;
   bool required = false;
   Range range;                       // numeric types
   std::vector<std::string> choices;  // choice: the admissible values when fixed here

@@ -12,6 +12,8 @@ struct SchemeTraits {
   bool weakly_compressible = false;  // pressure from an equation of state; density may be in the state
   bool projection = false;           // a pressure Poisson equation projects the velocity
   bool grid = false;                 // the Poisson equation is solved on an auxiliary grid
+  // The Poisson equation is assembled on the particles (one matrix entry per neighbour pair).
+  bool particle_poisson() const { return projection && !grid; }
 };
 
 const Registry<SchemeTraits>& scheme_registry();

@@ -22,7 +22,7 @@ std::string selected_part(const std::string& key, const Scene& s) {
 bool scheme_group_in_use(const std::string& owner, const Scene& s) {
   if (owner == "wcsph") return scheme_traits(s.scheme).weakly_compressible;
   if (owner == "isph") return !scheme_traits(s.scheme).weakly_compressible;
-  if (owner == "isph-gpps") return s.scheme == "isph-gpps";
+  if (owner == "isph-gpps") return scheme_traits(s.scheme).grid;
   return true;
 }
 

@@ -55,8 +55,8 @@ std::string automatic_density_mode(const Scene& s) {
 bool corrected_walled_flow(const Scene& s) {
   bool wall = false;
   for (int i = 0; i < 2 * s.dimension; ++i) wall |= s.sides[i].kind == SideKind::wall;
-  return wall && s.scheme == "isph" && !s.pressure_in_f() && s.density_correction == "pozorski_wawrenczuk" &&
-         flow_speed(s) > 0;
+  return wall && scheme_traits(s.scheme).particle_poisson() && !s.pressure_in_f() &&
+         s.density_correction == "pozorski_wawrenczuk" && flow_speed(s) > 0;
 }
 
 // method.regularisation = "auto". Particle shifting for every scheme: on the Taylor-Green vortex

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/expression.hpp"
+#include "core/scheme.hpp"
 #include "kernels/kernel.hpp"
 
 namespace arksph {
@@ -107,14 +108,15 @@ void check_scene_options(const std::map<std::string, Section>& sections, const S
                                                             [](const SideSpec& x) { return x.kind == SideKind::wall; })))
     sections.at("boundary").fail("wall_particles", "needs a 2D scene with at least one wall (scene.dimension = " +
                                                        std::to_string(s.dimension) + ")");
-  if (!s.wall_ghosts && s.scheme != "wcsph")
+  const SchemeTraits& scheme = scheme_traits(s.scheme);
+  if (!s.wall_ghosts && !scheme.weakly_compressible)
     sections.at("boundary").fail("wall_ghosts", "false needs method.scheme = \"wcsph\" (got \"" + s.scheme +
                                                     "\": the pressure projection needs the walls' images)");
-  if (s.ppe_operator != "approximate" && s.scheme != "isph")
+  if (s.ppe_operator != "approximate" && !scheme.particle_poisson())
     sections.at("method").fail("ppe_operator", "\"" + s.ppe_operator + "\" needs method.scheme = \"isph\" (got \"" +
                                                    s.scheme + "\": " +
-                                                   (s.scheme == "isph-gpps" ? "its pressure is solved on the grid" :
-                                                                              "it has no pressure Poisson equation") +
+                                                   (scheme.grid ? "its pressure is solved on the grid" :
+                                                                  "it has no pressure Poisson equation") +
                                                    ")");
 }
 

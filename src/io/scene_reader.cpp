@@ -19,8 +19,8 @@
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
 #include "io/input_file.hpp"
-#include "io/key_use.hpp"
 #include "io/scene_catalog.hpp"
+#include "io/scene_defaults.hpp"
 #include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
 #include "io/scheme_tables.hpp"
@@ -279,25 +279,6 @@ bool left_automatic(const Section& sec, const std::string& name, const Param& p)
   return n->is_string() && *n->value_exact<std::string>() == "auto";
 }
 
-// Each key left at "auto" takes the value its rule gives for this scene (text for a choice, "true"
-// or "false" for a flag). A rule that reads another automatic key applies that key's rule itself
-// when it finds "auto" there, so their order does not matter.
-void resolve_automatic(Scene& s, const std::vector<const CatalogKey*>& automatic) {
-  s.automatic.clear();
-  for (const CatalogKey* k : automatic)  // a key left out holds the struct's default until then
-    if (k->param.type != Param::Type::boolean) k->param.store(s, std::string("auto"));  // (a flag cannot)
-  for (const CatalogKey* k : automatic) {
-    const Param& p = k->param;
-    const std::string value = p.automatic(s);
-    if (p.type == Param::Type::boolean) p.store(s, value == "true");
-    else p.store(s, value);
-    s.automatic.emplace_back(p.key, value);
-  }
-  s.automatic_unused.clear();  // once every choice is made: a rule's choice may select a part
-  for (const CatalogKey* k : automatic)
-    if (!key_in_use(*k, s)) s.automatic_unused.push_back(k->param.key);
-}
-
 void check_method(const Section& m, Scene& s) {
   // What the constrained projection (pressure inside f) does not combine with: one line naming both keys.
   if (s.pressure_in_f()) {
@@ -324,7 +305,7 @@ void check_time_output(const std::map<std::string, Section>& sections, Scene& s)
     sections.at("time").fail("imex", "needs method.scheme = \"wcsph\", or \"isph\" with method.projection = \"constrained\" or \"orthogonal\" (got scheme \"" +
                                          s.scheme + "\", projection \"" + s.projection + "\")");
   const Section& o = sections.at("output");
-  if (!o.has("directory")) s.directory = "runs/" + s.name;
+  if (!o.has("directory")) s.directory = default_output_directory(s);
   if (s.directory.empty()) o.fail("directory", "must not be empty");
   if (s.interface && (s.phases.empty() || s.dimension != 2))
     sections.at("metrics").fail("interface", "needs a 2D scene with at least one [[phase]]");
@@ -349,7 +330,7 @@ Scene read_scene_text(const std::string& toml_text, const std::string& source_na
   std::map<std::string, Section> sections;  // every table but [[phase]], unknown keys rejected here
   for (const std::string& table : scene_tables())
     if (table != "phase") sections.emplace(table, root.section(table, keys_of_table(table)));
-  Scene s;
+  Scene s = scene_defaults();  // every key below is stored again: the file's value or the default
   s.source = source_name;
   std::vector<const CatalogKey*> automatic;  // keys left at "auto", in catalog order
   for (const CatalogKey& k : scene_catalog()) {

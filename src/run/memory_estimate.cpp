@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "core/memory_limit.hpp"
+#include "core/scheme.hpp"
 #include "kernels/kernel.hpp"
 
 namespace arksph {
@@ -23,10 +24,11 @@ MemoryEstimate estimate_run_memory(const Scene& s) {
   const double radius = make_kernel(s.kernel, s.h_over_dx * s.spacing, s.dimension).radius() / s.spacing;
   const double neighbours = s.dimension == 2 ? std::numbers::pi * radius * radius : 2 * radius;
   e.pairs = e.particles * neighbours;
-  const double pair_bytes = kBytesPerPair + (s.scheme == "isph" ? kBytesPerPpePair : 0.0);
+  const SchemeTraits& scheme = scheme_traits(s.scheme);
+  const double pair_bytes = kBytesPerPair + (scheme.particle_poisson() ? kBytesPerPpePair : 0.0);
   e.bytes = e.particles * kBytesPerParticle + e.pairs * pair_bytes;
   e.key = "fluid.spacing";
-  if (s.scheme == "isph-gpps") {
+  if (scheme.grid) {
     const double cell = s.gpps_spacing > 0 ? s.gpps_spacing : s.spacing;
     e.grid_cells = 1;
     for (int k = 0; k < s.dimension; ++k) e.grid_cells *= std::round((s.max[k] - s.min[k]) / cell);

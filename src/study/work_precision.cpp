@@ -161,13 +161,13 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
   std::ostringstream warnings;
   for (const auto& res : s.resolutions)
     for (const auto& sch : s.schemes) {
-      Scene sc;
+      int ghia_re = 0;
       try {
-        sc = read_scene_text(scene_text, s.scene, run_sets(s, sch, res), warnings);
+        ghia_re = read_scene_text(scene_text, s.scene, run_sets(s, sch, res), warnings).ghia_re;
       } catch (const InputError& e) {
         throw InputError(path + ": scheme " + sch.name + ", resolution " + res.name + ": " + e.what());
       }
-      if (s.reference == "ghia" && sc.ghia_re == 0)
+      if (s.reference == "ghia" && ghia_re == 0)
         throw bad("study.reference", "ghia needs a scene with [metrics] ghia_re (scheme " + sch.name + ", resolution " +
                                          res.name + ")");
     }

@@ -12,6 +12,7 @@
 
 #include "boundary/ghosts.hpp"
 #include "core/scene.hpp"
+#include "io/scene_defaults.hpp"
 #include "kernels/kernel.hpp"
 
 using namespace arksph;
@@ -25,7 +26,7 @@ using Map = std::array<double, 4>;
 constexpr double kPosTol = 1e-15;
 
 Scene unit_box() {
-  Scene s;
+  Scene s = scene_defaults();
   s.dimension = 2;
   s.min = {0, 0};
   s.max = {1, 1};
@@ -241,7 +242,7 @@ TEST_CASE("ghosts: particles at or beyond the support radius from every side get
 }
 
 TEST_CASE("ghosts: 1D walls (y = nullptr)") {
-  Scene scene;
+  Scene scene = scene_defaults();
   scene.dimension = 1;
   scene.min = {0, 0};
   scene.max = {2, 0};

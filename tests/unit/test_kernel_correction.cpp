@@ -8,6 +8,7 @@
 
 #include "run/setup.hpp"
 #include "io/scene_reader.hpp"
+#include "io/scene_defaults.hpp"
 #include "rhs/KernelCorrection_Basa2008.hpp"
 #include "rhs/terms.hpp"
 #include "test_support.hpp"
@@ -19,7 +20,7 @@ namespace {
 // The periodic Taylor-Green box with every particle moved by up to 0.35 dx in x and y (uniform), so
 // that no neighbourhood is symmetric; the evaluator fills the correction data at these positions.
 struct Disordered {
-  Scene scene;
+  Scene scene = scene_defaults();
   std::unique_ptr<RhsEvaluator> rhs;
   explicit Disordered(const std::string& correction) {
     std::ostringstream w;

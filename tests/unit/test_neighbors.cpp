@@ -10,6 +10,7 @@
 
 #include "boundary/ghosts.hpp"
 #include "core/scene.hpp"
+#include "io/scene_defaults.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbors/cell_list.hpp"
 
@@ -211,7 +212,7 @@ TEST_CASE("neighbors: only the first n_real points get lists, but all points are
 }
 
 TEST_CASE("neighbors: periodic unit box through ghost images equals the minimum-image neighbour set") {
-  Scene scene;
+  Scene scene = scene_defaults();
   scene.dimension = 2;
   scene.min = {0, 0};
   scene.max = {1, 1};

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "io/names.hpp"
+#include "io/scene_defaults.hpp"
 #include "core/expression.hpp"
 #include "io/scene_reader.hpp"
 
@@ -155,7 +156,7 @@ TEST_CASE("scene: the embedded default is the Re = 100 cavity") {
 
 TEST_CASE("scene: defaults fill every key but the required ones") {
   const Scene s = read(kBase);
-  const Scene d;
+  const Scene d = scene_defaults();
   CHECK(s.name == "unnamed");
   CHECK(s.directory == "runs/unnamed");
   CHECK(s.spacing == 0.1);

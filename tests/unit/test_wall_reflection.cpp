@@ -3,11 +3,12 @@
 #include <doctest/doctest.h>
 
 #include "boundary/wall_reflection.hpp"
+#include "io/scene_defaults.hpp"
 
 using namespace arksph;
 
 TEST_CASE("wall reflection: a particle beyond a wall comes back mirrored, others are untouched") {
-  Scene s;
+  Scene s = scene_defaults();
   s.min = {0, 0};
   s.max = {1, 1};
   s.sides[3].velocity = {1.0, 0.5};     // top wall moving (normal velocity 0.5, for the check)

@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "core/param_builder.hpp"
+#include "core/scheme.hpp"
 #include "kernels/kernel.hpp"
 #include "rhs/density/Continuity_Szewc2012.hpp"
 #include "rhs/pressure/PressureGradient_Colagrossi2003.hpp"
@@ -255,7 +256,7 @@ Part<TermFactory> regularisation_shifting() {
             const Kernel kernel = make_kernel(s.kernel, h, s.dimension);
             double speed = part_param<double>(s, "method.shifting_speed");
             if (speed <= 0) speed = flow_speed(s);
-            const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
+            const bool density = scheme_traits(s.scheme).weakly_compressible && s.density_mode == "continuity";
             const double coefficient = part_param<double>(s, "method.shifting_coefficient");
             const double anti_clump = part_param<double>(s, "method.shifting_anti_clumping");
             auto term = std::make_unique<Shifting>(coefficient, speed, part_param<double>(s, "method.shifting_limit"),

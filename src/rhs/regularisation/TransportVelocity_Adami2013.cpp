@@ -9,6 +9,7 @@
 // Ghosts take their source's du, reflected like a velocity where they are wall images. With the
 // continuity equation the density is carried along u~ as well: drho_a/dt += du_a . grad rho_a.
 #include "core/param_builder.hpp"
+#include "core/scheme.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
 
@@ -86,7 +87,7 @@ Part<TermFactory> regularisation_transport_velocity() {
             const double h = s.h_over_dx * s.spacing;
             double speed = part_param<double>(s, "method.transport_speed");
             if (speed <= 0) speed = flow_speed(s);
-            const bool density = s.scheme == "wcsph" && s.density_mode == "continuity";
+            const bool density = scheme_traits(s.scheme).weakly_compressible && s.density_mode == "continuity";
             return std::make_unique<TransportVelocity>(part_param<double>(s, "method.transport_coefficient") * h * speed,
                                                        density);
           },

@@ -160,6 +160,9 @@ class DecomposedRun final : public RunStrategy {
   double start_time() const override { return checkpoints_->start_time(); }
   int first_frame() const override { return checkpoints_->first_frame(); }
   TimeIntegrator& integrator() override { return *integrator_; }
+  void start() override {
+    if (!restarting_) write_frame(0.0, integrator_->stats());
+  }
   double step(double t, double stop) override {
 #ifdef ARKSPH_WITH_HYPRE
     if (projection_) projection_->begin_step(t, integrator_->state());
@@ -270,7 +273,6 @@ DecomposedRun::DecomposedRun(const Scene& scene, const RunOptions& options, cons
   make_projection();
   set_up_stepping();
   open_output(options);
-  if (!restarting_) write_frame(0.0, integrator_->stats());
   reflections_before_ = restarting_ ? checkpoints_->restart().wall_reflections : 0;
 }
 

@@ -57,6 +57,7 @@ RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, Clock::time
     result.message = v.message;
   };
   try {
+    run.start();
     while (t < scene.end) {
       const double t_next = next_output_time(scene, frame);
       double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)

@@ -1,5 +1,6 @@
 // The run loop, written once for a run on one process and a run over MPI ranks:
 //
+//   the frame at the start
 //   until time.end (or a steady state):
 //     until the next output time:
 //       one step to the next stop time (output or checkpoint);
@@ -34,6 +35,9 @@ class RunStrategy {
   virtual int first_frame() const = 0;
   // The integrator of the run (a strategy may replace it, e.g. at a checkpoint).
   virtual TimeIntegrator& integrator() = 0;
+  // The output at the start (a fresh run's frame at t = 0; a restart has it already); then the
+  // run is ready to step.
+  virtual void start() = 0;
 
   // One step from t towards `stop` (C&R's projection keeps the positions r^n first). Returns the
   // time reached.
@@ -74,8 +78,7 @@ class RunStrategy {
   virtual void finish(RunResult& result, double wall, double stepping) = 0;
 };
 
-// Runs the loop above from strategy.start_time() to scene.end (the frame at the start time is the
-// set-up's). `wall_start`: when the run's set-up began (summary.json's wall time); `quiet`: no
+// Runs the loop above from strategy.start_time() to scene.end. `wall_start`: when the run's set-up began (summary.json's wall time); `quiet`: no
 // progress on stderr.
 RunResult run_loop(const Scene& scene, RunStrategy& strategy, bool quiet,
                    std::chrono::steady_clock::time_point wall_start);

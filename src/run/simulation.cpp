@@ -72,6 +72,7 @@ class LocalRun final : public RunStrategy {
   double start_time() const override { return checkpoints_->start_time(); }
   int first_frame() const override { return checkpoints_->first_frame(); }
   TimeIntegrator& integrator() override { return *stepper_.integrator; }
+  void start() override;
   double step(double t, double stop) override { return stepper_.step(t, stop); }
   double limit(double t_stop) override { return checkpoints_->limit(t_stop); }
   Verdict reflect_and_check(double t, Verdict mine) override;
@@ -104,11 +105,12 @@ class LocalRun final : public RunStrategy {
   void finish(RunResult& result, double wall, double stepping) override;
 
  private:
-  void start_integrator(std::vector<double>& y0);
+  void start_integrator();
   const Scene& scene_;
   Model model_;
   OutputFolder folder_;
   std::string run_id_;
+  std::vector<double> y0_;  // the initial state, until the frame at t = 0 is written
   std::vector<double> d0_;  // number density at t = 0, in the current particle order
   ParticleReorder reorder_;
   std::optional<Checkpointer> checkpoints_;
@@ -134,12 +136,12 @@ LocalRun::LocalRun(const Scene& scene, const RunOptions& options)
   rhs.set_between_phases(poll_setup_interrupt);  // until the first step (see below)
 
   set_activity("setting up the initial state of " + particles);
-  std::vector<double> y0(layout.size());
-  rhs.initial_state(y0.data());
-  if (scene.reorder_every > 0) reorder_.sort(y0.data(), d0_);  // t = 0 is a sync point (before the first f)
+  y0_.resize(layout.size());
+  rhs.initial_state(y0_.data());
+  if (scene.reorder_every > 0) reorder_.sort(y0_.data(), d0_);  // t = 0 is a sync point (before the first f)
   poll_setup_interrupt();
   set_activity("building the neighbour lists and initial fields of " + particles);
-  rhs.eval(0.0, y0.data(), nullptr);
+  rhs.eval(0.0, y0_.data(), nullptr);
   poll_setup_interrupt();
   d0_ = number_density(rhs.fields());  // at t = 0 in the t = 0 order, also on restart (bit-identical diagnostics)
   // Restart: the particles in the checkpoint's order (re-sorts, method.reorder_every); check the
@@ -157,20 +159,24 @@ LocalRun::LocalRun(const Scene& scene, const RunOptions& options)
     out_->restore_steady(checkpoints_->restart().steady_samples, checkpoints_->restart().steady_columns);
   }
   checkpoints_->set_steady_monitor(&out_->steady_monitor());
-  start_integrator(y0);
+  start_integrator();
+}
 
+void LocalRun::start() {
+  const std::string particles = std::to_string(model_.rhs->layout().n) + " particles";
   poll_setup_interrupt();
   set_activity("writing the output at t = 0 of " + particles);
-  if (!restarting) out_->write(0.0, y0.data(), d0_, integrator().stats());
-  std::vector<double>().swap(y0);  // the integrator holds the state from here: one state vector less
+  if (!checkpoints_->restarting()) out_->write(0.0, y0_.data(), d0_, integrator().stats());
+  std::vector<double>().swap(y0_);  // the integrator holds the state from here: one state vector less
   poll_setup_interrupt();
-  rhs.set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
+  model_.rhs->set_between_phases(nullptr);  // from here a signal stops the run after a step, with a checkpoint
   set_activity("stepping " + particles);
 }
 
 // The step control and the integrator at t = 0 or at the checkpoint's state (the projection is
 // wired in by make_time_stepper).
-void LocalRun::start_integrator(std::vector<double>& y0) {
+void LocalRun::start_integrator() {
+  std::vector<double>& y0 = y0_;
   const Scene& scene = scene_;
   RhsEvaluator& rhs = *model_.rhs;
   const StateLayout& layout = rhs.layout();

@@ -19,6 +19,8 @@ OUT/eps_re0.5.csv. OUT/robustness.png and OUT/eps_re0.5.png are drawn from the C
                                   # without particles on the wall) and Fig. 2 (pressure reduction
                                   # off / on, at c = 10 U0 and at Basa's 125 kPa) and Fig. 7
                                   # (transverse drift, drift.py), runs and PNGs in OUT/fig4, fig2, fig7
+  ... --check REF                 # then compare with the committed tables in REF (measured/ or
+                                  # measured/full/); exit 1 when a verdict or a value differs
 """
 import argparse
 import concurrent.futures as cf
@@ -148,6 +150,117 @@ def read_done(path):
             for row in csv.DictReader(fh):
                 done[(row["letter"], row["correction"], row["eos"], float(row["re"]))] = row
     return done
+
+
+# --check: what a map or the figures measured against the committed tables (cases/robustness_map/
+# measured/ for the reduced map and the figures, measured/full/ for the full map).
+# A run's verdict (status: failed, steady or capped) must be the committed one. t* at failure within
+# TSTAR_FAIL_RTOL: the late failures of model B at Re <= 0.5 grow from round-off, and the two
+# committed maps, made with builds of different weeks, put the same run's failure at t* = 18.3 and 15.2
+# (17 %; every other shared run within 7 %). eps at the end of a steady or capped run, and the t*
+# a capped run reached, within EPS_RTOL: set by the discretisation, not by round-off (the two maps
+# agree to 0.07 % on every steady run), while the models differ by 20 % and more.
+TSTAR_FAIL_RTOL = 0.3
+EPS_RTOL = 0.01
+# Fig. 7: the neighbours' transverse drift stays at round-off to t* = 27.6 (measured 3.2e-12 of the
+# spacing at most) and the rows as a whole move by at most Basa's 0.5 % of the spacing (measured
+# 0.31 % at most, drift.py's max_row_shift).
+DRIFT_ROUNDOFF = 1e-9
+ROW_SHIFT_MAX = 5e-3
+
+
+def close(a, b, rtol):
+    return abs(a - b) <= rtol * max(abs(a), abs(b))
+
+
+def check_map(out_dir, ref_dir, expected):
+    """Compare OUT/results.csv with REF/results.csv; expected: the run keys this map was to run.
+    Returns the number of differences (a run of `expected` with a reference but no result counts)."""
+    ref = read_done(os.path.join(ref_dir, "results.csv"))
+    got = read_done(os.path.join(out_dir, "results.csv"))
+    bad, compared, unreferenced = [], 0, 0
+    for key in sorted(set(expected) | set(got), key=lambda k: (k[3], k)):
+        r, g = ref.get(key), got.get(key)
+        if r is None:
+            unreferenced += g is not None
+            continue
+        if g is None:
+            bad.append((key, "no result", r["status"], ""))
+            continue
+        compared += 1
+        if g["status"] != r["status"]:
+            bad.append((key, "status", r["status"], g["status"]))
+        elif r["status"] == "failed":
+            if not close(float(g["tstar_fail"]), float(r["tstar_fail"]), TSTAR_FAIL_RTOL):
+                bad.append((key, "t* at failure", r["tstar_fail"], g["tstar_fail"]))
+        else:
+            if not close(float(g["eps_last"]), float(r["eps_last"]), EPS_RTOL):
+                bad.append((key, "eps at the end", r["eps_last"], g["eps_last"]))
+            if r["status"] == "capped" and not close(float(g["tstar_reached"]), float(r["tstar_reached"]), EPS_RTOL):
+                bad.append((key, "t* reached", r["tstar_reached"], g["tstar_reached"]))
+    for (letter, corr, eos, re), what, want, have in bad:
+        print(f"differs: {letter} {corr} {eos} Re={re:g}: {what} {have or '-'} (committed {want})", file=sys.stderr)
+    print(f"check against {ref_dir}: {compared} runs compared, {len(bad)} differ, {unreferenced} without a "
+          f"committed row (tolerances: t* at failure {TSTAR_FAIL_RTOL:g}, eps and capped t* {EPS_RTOL:g})",
+          file=sys.stderr)
+    return len(bad) + (compared == 0)
+
+
+def check_figures(out_dir, ref_dir):
+    """Compare the figure runs in OUT/fig4, fig2, fig7 with REF/fig4_eps.csv, fig2_eps.csv and
+    fig7_drift.csv. Returns the number of differences."""
+    def rows(path):
+        with open(path) as fh:
+            return list(csv.DictReader(fh))
+
+    bad = []
+    # Fig. 4: eps at t* = 0.1 for each wall option.
+    ref4 = {(r["wall_velocity"], r["wall_particles"]): r for r in rows(os.path.join(ref_dir, "fig4_eps.csv"))}
+    got4 = {(r["wall_velocity"], r["wall_particles"]): r for r in rows(os.path.join(out_dir, "fig4", "fig4_eps.csv"))}
+    for key, r in ref4.items():
+        g = got4.get(key)
+        if g is None or g["exit"] != r["exit"] or not g["eps"] or not close(float(g["eps"]), float(r["eps"]), EPS_RTOL):
+            bad.append(f"Fig. 4 {key}: exit / eps {g and g['exit']} / {g and g['eps']} (committed {r['exit']} / {r['eps']})")
+
+    # Fig. 2: failed (eps >= EPS_FAIL from t* = TSTAR_JUDGE on) or not, as committed; eps at the end
+    # of the runs that do not fail.
+    def fig2(path):
+        series = {}
+        for r in rows(path):
+            series.setdefault((r["initial_pressure"], r["pressure_reduction"]), []).append(r)
+        verdict = {}
+        for key, rs in series.items():
+            judged = [float(r["eps"]) for r in rs if float(r["tstar"]) >= TSTAR_JUDGE - 1e-9]
+            verdict[key] = (rs[-1]["exit"], any(not (e < EPS_FAIL) for e in judged), float(rs[-1]["eps"]))
+        return verdict
+
+    ref2, got2 = fig2(os.path.join(ref_dir, "fig2_eps.csv")), fig2(os.path.join(out_dir, "fig2", "fig2_eps.csv"))
+    for key, (code, failed, eps) in ref2.items():
+        g = got2.get(key)
+        if g is None or g[:2] != (code, failed) or (not failed and not close(g[2], eps, EPS_RTOL)):
+            bad.append(f"Fig. 2 {key}: exit, failed, eps at the end {g} (committed {(code, failed, eps)})")
+
+    # Fig. 7: kinetic energy at the end, the neighbours' drift at round-off, the rows within Basa's band.
+    def fig7_summary(path):
+        out = {}
+        for r in rows(path):
+            exit_, ke, drift, shift = out.get(r["run"], (r["exit"], 0.0, 0.0, 0.0))
+            out[r["run"]] = (r["exit"], float(r["ke_ratio"]), max(drift, float(r["max_pair_drift"])),
+                             max(shift, float(r["max_row_shift"])))
+        return out
+
+    ref7, got7 = fig7_summary(os.path.join(ref_dir, "fig7_drift.csv")), fig7_summary(os.path.join(out_dir, "fig7", "fig7_drift.csv"))
+    for run, (code, ke, _, _) in ref7.items():
+        g = got7.get(run)
+        if (g is None or g[0] != code or not close(g[1], ke, EPS_RTOL) or not g[2] <= DRIFT_ROUNDOFF
+                or not g[3] <= ROW_SHIFT_MAX):
+            bad.append(f"Fig. 7 {run}: exit, kinetic energy ratio, largest pair drift, largest row shift {g} "
+                       f"(committed exit {code}, ratio {ke}; bounds {DRIFT_ROUNDOFF:g}, {ROW_SHIFT_MAX:g})")
+    for line in bad:
+        print("differs: " + line, file=sys.stderr)
+    print(f"check of the figure runs against {ref_dir}: {len(ref4) + len(ref2) + len(ref7)} runs compared, "
+          f"{len(bad)} differ", file=sys.stderr)
+    return len(bad)
 
 
 def plot(out_dir):
@@ -404,13 +517,15 @@ def main():
     ap.add_argument("--re", type=float, nargs="*", default=None, help="Reynolds numbers (override)")
     ap.add_argument("--plot-only", metavar="OUT", default=None)
     ap.add_argument("--figures", metavar="OUT", default=None, help="Fig. 4, Fig. 2 and Fig. 7 runs and plots into OUT")
+    ap.add_argument("--check", metavar="REF", default=None,
+                    help="compare the results with the committed tables in REF; exit 1 if they differ")
     a = ap.parse_args()
     if a.figures:
         figures(a.binary, a.figures, a.jobs)
-        return 0
+        return 1 if a.check and check_figures(a.figures, a.check) else 0
     if a.plot_only:
         plot(a.plot_only)
-        return 0
+        return 1 if a.check and check_map(a.plot_only, a.check, []) else 0
     if a.re:
         res = a.re
     elif a.reduced:
@@ -452,7 +567,8 @@ def main():
                   f"{row['status']:7s} t*fail={row['tstar_fail'] or '-':8s} t*={row['tstar_reached']} "
                   f"({row['wall_s']} s)", file=sys.stderr)
     plot(out)
-    return 0
+    expected = [(letter, corr, eos, float(re)) for re in res for eos in EOS for corr in CORRECTIONS for letter, _ in MODELS]
+    return 1 if a.check and check_map(out, a.check, expected) else 0
 
 
 if __name__ == "__main__":

@@ -109,7 +109,8 @@ TEST_CASE("constrained projection: the pressure of the Taylor-Green vortex at t 
 // their orders for the velocity and for the pressure (the acceptance band of the order study), and
 // C&R's projection after each step at least 0.5 below 2 on the same runs (measured 1.09 here, where
 // the step count is small; 0.6 on the longer runs of the order-study vortex).
-TEST_CASE("constrained projection: Heun-Euler and Bogacki-Shampine keep their orders, C&R's does not") {
+TEST_CASE("constrained projection: Heun-Euler and Bogacki-Shampine keep their orders, C&R's does not" *
+          doctest::test_suite("long")) {
   const testing::ScratchDir scratch("constrained_order");
   OrderStudy study = vortex_order_study(scratch);
   const auto fits = run_order_study(study, false);
@@ -190,7 +191,8 @@ TEST_CASE("constrained projection: the P-W correction's velocity removes the den
 
 // The correction inside f keeps the orders: the vortex on a smoothly perturbed lattice (the correction
 // then moves every particle) with Heun-Euler and Bogacki-Shampine, within 0.3 as above.
-TEST_CASE("constrained projection: with the P-W correction's velocity the orders hold") {
+TEST_CASE("constrained projection: with the P-W correction's velocity the orders hold" *
+          doctest::test_suite("long")) {
   const testing::ScratchDir scratch("constrained_pw_order");
   OrderStudy study = vortex_order_study(scratch);
   study.sets = {"initial.offset=[\"0.003*sin(2*pi*y+1)\", \"0.003*cos(4*pi*x+2)\"]", kPerturbedAtRest[3]};

@@ -130,7 +130,7 @@ TEST_CASE("hostile: a 1 MB value and a 200,000-term expression are echoed cut to
   }
 }
 
-TEST_CASE("hostile: batch with a long varied value runs in a short folder; a bad sweep still exits 2") {
+TEST_CASE("hostile: batch with a long varied value runs in a short folder, a bad sweep still exits 2") {
   ScratchDir scratch("batch_long");
   write_scene(scratch);
   const std::string long_name(400, 'n');

@@ -95,7 +95,7 @@ TEST_CASE("hostile input: frame rows are written in id order, every array permut
   CHECK(FrameInIdOrder(f).frame().x == x.data());  // already in order: a view, nothing copied
 }
 
-TEST_CASE("hostile input: batch folder names stay short and distinct; a varied key cannot be set") {
+TEST_CASE("hostile input: batch folder names stay short and distinct, a varied key cannot be set") {
   const std::string dir = std::string(ARKSPH_SOURCE_DIR) + "/cases/sweeps/t.toml";
   const std::string a(300, 'a'), b = std::string(300, 'a') + "b";
   const Sweep sw = read_sweep_text("[sweep]\nscene = \"taylor_green_small.toml\"\n[[vary]]\nkey = \"scene.name\"\n"

@@ -219,7 +219,7 @@ TEST_CASE("output: PVD collection after three adds") {
   }
 }
 
-TEST_CASE("output: CSV time series rows are flushed; small tables") {
+TEST_CASE("output: CSV time series rows are flushed, small tables") {
   ScratchDir tmp("csv");
   const std::string path = tmp / "timeseries.csv";
   TimeseriesCsv csv;

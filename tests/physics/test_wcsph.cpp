@@ -99,19 +99,21 @@ TEST_CASE("erkstep: the 6.4.1 FSAL bug is detected for exactly the affected tabl
 // dt = 2e-3 is about the CFL limit 0.25 h / c = 2.3e-3 of this scene; 0.05 time units is 25 steps.
 // Nominal orders 3 and 2; the tolerance 0.3 leaves room for the pre-asymptotic regime of three
 // step sizes. Without the workaround ARK324 measures 2.0, which this test rejects.
-TEST_CASE("erkstep: temporal order of ARK324 is about 3 with the FSAL workaround") {
+TEST_CASE("erkstep: temporal order of ARK324 is about 3 with the FSAL workaround" *
+          doctest::test_suite("asan_slow")) {
   const double p = observed_order("ARKODE_ARK324L2SA_ERK_4_2_3", 2e-3);
   MESSAGE("ARK324L2SA_ERK_4_2_3 observed order ", p);
   CHECK(p == doctest::Approx(3.0).epsilon(0.1));
 }
 
-TEST_CASE("erkstep: temporal order of Heun-Euler is about 2") {
+TEST_CASE("erkstep: temporal order of Heun-Euler is about 2" * doctest::test_suite("asan_slow")) {
   const double p = observed_order("ARKODE_HEUN_EULER_2_1_2", 2e-3);
   MESSAGE("HEUN_EULER_2_1_2 observed order ", p);
   CHECK(p == doctest::Approx(2.0).epsilon(0.15));
 }
 
-TEST_CASE("erkstep: without the workaround ARK324 drops to order 2 (the bug is real)") {
+TEST_CASE("erkstep: without the workaround ARK324 drops to order 2 (the bug is real)" *
+          doctest::test_suite("asan_slow")) {
   const Scene scene = periodic_scene({});
   auto run = [&](double dt) {
     Model model = build_model(scene);

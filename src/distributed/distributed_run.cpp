@@ -20,9 +20,9 @@
 #include "distributed/gather_state.hpp"
 #include "distributed/halo_rhs.hpp"
 #ifdef ARKSPH_WITH_HYPRE
-#include "distributed/halo_projection.hpp"
-#include "projection/ConstrainedPressure.hpp"
+#include "distributed/halo_domain.hpp"
 #endif
+#include "projection/projection.hpp"
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
 #include "distributed/rank_frame.hpp"
@@ -126,8 +126,8 @@ void check_distributable(const Scene& scene, int ranks) {
   const std::string on =
       " is not supported on several MPI ranks (" + std::to_string(ranks) + "); run it as one process";
   const SchemeTraits& traits = scheme_traits(scene.scheme);
-  // Projection schemes: isph and isph-gpps with the projection after each step (halo_projection.hpp),
-  // with hypre.
+  // Projection schemes: isph and isph-gpps (projection/projection.hpp over halo_domain.hpp), with
+  // hypre.
   if (!traits.weakly_compressible && !traits.projection)
     throw InputError(scene.source + ": scheme " + scene.scheme + on);
   if (traits.projection) {
@@ -164,11 +164,7 @@ class DecomposedRun final : public RunStrategy {
     if (!restarting_) write_frame(0.0, integrator_->stats());
   }
   double step(double t, double stop) override {
-#ifdef ARKSPH_WITH_HYPRE
     if (projection_) projection_->begin_step(t, integrator_->state());
-#else
-    (void)t;
-#endif
     return integrator_->step(stop);
   }
   double limit(double t_stop) override { return checkpoints_->limit(t_stop); }
@@ -239,9 +235,8 @@ class DecomposedRun final : public RunStrategy {
   OutputHistory earlier_;
   std::optional<StateChecker> checker_;
   std::optional<StateGather> gather_;
-#ifdef ARKSPH_WITH_HYPRE
-  std::unique_ptr<HaloProjection> projection_;
-#endif
+  Projection* projection_ = nullptr;  // the model's, over the rank's HaloDomain (with hypre)
+  std::vector<std::int64_t> pressure_ids_;  // the ids of the rank's particles at the last projection
   ErkOptions eo_;
   std::unique_ptr<ErkIntegrator> integrator_;
   std::unique_ptr<RunOutput> out_;
@@ -363,7 +358,10 @@ void DecomposedRun::read_restart(const RunOptions& options) {
 void DecomposedRun::make_projection() {
 #ifdef ARKSPH_WITH_HYPRE
   if (!model_->projection) return;
-  projection_ = std::make_unique<HaloProjection>(scene_, comm_, *f_, *mine_, model_->particles.id[0], flow_);
+  // The model's projection becomes the rank's: summary.json reports it as one process's.
+  model_->projection = std::make_unique<Projection>(
+      scene_, std::make_unique<HaloDomain>(comm_, *f_, *mine_, model_->particles.id[0]), flow_);
+  projection_ = model_->projection.get();
   for (std::string& term : model_->terms)
     if (term == "projection:ppe-" + scene_.ppe_solver) term = "projection:ppe-hypre";
     else if (term == "projection:constrained-ppe-" + scene_.ppe_solver) term = "projection:constrained-ppe-hypre";
@@ -380,9 +378,7 @@ void DecomposedRun::make_projection() {
 
 // The rank's particles changed (migration, a new deal): the projection numbers its rows anew.
 void DecomposedRun::particles_moved() {
-#ifdef ARKSPH_WITH_HYPRE
   if (projection_) projection_->particles_moved();
-#endif
 }
 
 // The largest speed (of y) and acceleration (of the last f) over the ranks: one all-reduce.
@@ -398,11 +394,16 @@ void DecomposedRun::set_up_stepping() {
   eo_.any_rank = [this](bool local) { return comm_.max(static_cast<std::int64_t>(local)) > 0; };
   eo_.describe_entry = [this](std::size_t i, double v) { return describe_rhs_entry(mine_->layout(), mine_->ids(), i, v); };
   eo_.stability = [this](double, const double* yl) { return stable(yl); };
-#ifdef ARKSPH_WITH_HYPRE
   if (projection_ && !projection_->constrained()) {
-    eo_.postprocess = [this](double tt, double* yl) { projection_->project(tt, yl); };
+    eo_.postprocess = [this](double tt, double* yl) {
+      projection_->project(tt, yl);
+      pressure_ids_ = mine_->ids();
+    };
     if (scene_.projection_points == "stages")
-      eo_.postprocess_stage = [this](double tt, double* yl) { projection_->project_stage(tt, yl); };
+      eo_.postprocess_stage = [this](double tt, double* yl) {
+        projection_->project_stage(tt, yl);
+        pressure_ids_ = mine_->ids();
+      };
   }
   // A constrained projection starts from a divergence-free velocity (a restart already is).
   if (projection_ && projection_->constrained() && !restarting_) {
@@ -410,7 +411,6 @@ void DecomposedRun::set_up_stepping() {
     projection_->project_initial(0.0, y.data());
     mine_->load(y.data());
   }
-#endif
   start_integrator(checkpoints_->start_time(), restarting_ ? checkpoints_->restart().next_step : 0.0,
                    checkpoints_->counters());
 }
@@ -427,13 +427,12 @@ void DecomposedRun::start_integrator(double t, double h, const StepStats& counte
   eo_.initial_dt = h > 0 ? h : stable(y.data());
   HaloRhs& f = *f_;
   RhsFunction rhs_fn = [&f](double tt, const double* yl, double* yd) { f.eval(tt, yl, yd); };
-#ifdef ARKSPH_WITH_HYPRE
-  if (projection_ && projection_->constrained())  // the pressure inside f (halo_constrained_pressure.hpp)
+  if (projection_ && projection_->constrained())  // the pressure inside f (projection/ConstrainedPressure.hpp)
     rhs_fn = [&f, this](double tt, const double* yl, double* yd) {
       f.eval(tt, yl, yd);
       projection_->constrain(yl, yd);
+      pressure_ids_ = mine_->ids();
     };
-#endif
   integrator_ = std::make_unique<ErkIntegrator>(std::move(rhs_fn), y, t, eo_);
   integrator_->set_counter_offset(counters);
 }
@@ -499,9 +498,10 @@ void DecomposedRun::write_frame(double at, const StepStats& st) {
   std::optional<JoinedFrame> whole;
   if (write_frames_) {
     std::vector<double> pressure;  // isph: the last projection's, as one process's frame carries it
-#ifdef ARKSPH_WITH_HYPRE
-    if (projection_ && projection_->stats().solves > 0) pressure = projection_->pressure_at(mine_->ids(), model_->particles.n);
-#endif
+    if (projection_ && projection_->stats().solves > 0) {  // by id: the particles may have migrated since
+      const std::vector<double> by_id = spread_by_id(comm_, pressure_ids_, projection_->pressure(), model_->particles.n);
+      for (std::int64_t id : mine_->ids()) pressure.push_back(by_id[static_cast<std::size_t>(id)]);
+    }
     const RankFrame rows(at, *f_, *mine_, grid_->domain(), pressure.empty() ? nullptr : pressure.data(),
                          reduction.number_density());
     if (pieces_) {
@@ -633,10 +633,6 @@ void DecomposedRun::finish(RunResult& result, double wall, double stepping) {
     if (scene_.reorder_every > 0) out_->set_reorders(migrations_, migration_seconds_);
     out_->set_stepping_seconds(stepping);
     out_->set_cpu_seconds(cpu);
-#ifdef ARKSPH_WITH_HYPRE
-    if (projection_) out_->set_projection_report(projection_->stats(), projection_->solver_name());
-    if (projection_ && projection_->correction()) out_->set_correction_report(projection_->correction()->stats());
-#endif
     try {
       out_->finish(result, st, wall, diagnostic_evals_, reflected, f_->exchanges());
     } catch (const OutputError& e) {

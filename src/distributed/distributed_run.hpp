@@ -13,7 +13,7 @@
 //               integrator is re-initialised there (restart_at, as after a re-sort); wall
 //               reflections are counted over the ranks and re-initialise every rank
 //   projection  isph: the Cummins & Rudman projection after each accepted step over the rank's
-//               particles and halo, the PPE solved by hypre over the ranks (halo_projection.hpp)
+//               particles and halo, the PPE solved by hypre over the ranks (halo_domain.hpp)
 //   agreement   after every step the ranks agree on failures and signals (rank_verdict.hpp)
 //   output      rank 0 gathers the state (gather_state.hpp) and writes what a one-process run
 //               writes, summary.json with "mpi": {"ranks", "halo_exchanges", "migrations",
@@ -36,7 +36,7 @@
 namespace arksph::distributed {
 
 // InputError (one line, naming the key) for what a run over several ranks does not do yet:
-// time.imex, dimension other than 2; under isph and isph-gpps (halo_projection.hpp): the
+// time.imex, dimension other than 2; under isph and isph-gpps (halo_domain.hpp): the
 // orthogonal projection, the density correction with the constrained projection or with its
 // KINSOL solver, the exact operator; and builds without hypre.
 void check_distributable(const Scene& scene, int ranks);

@@ -1,24 +1,30 @@
 #include "distributed/halo_density_correction.hpp"
 
 #include <chrono>
-#include <stdexcept>
+
+#include "core/particle_order.hpp"
 
 namespace arksph::distributed {
 
-HaloDensityCorrection::HaloDensityCorrection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                                             const RankParticles& owned, std::int64_t pinned_id)
-    : comm_(comm),
+HaloDensityCorrection::HaloDensityCorrection(const Scene& scene, ParticleDomain& domain, HaloRhs& f,
+                                             const RankParticles& owned)
+    : domain_(domain),
       f_(f),
       owned_(owned),
       threshold_(scene.correction_threshold),
       max_iterations_(scene.correction_max_iterations),
       spacing_(scene.spacing),
       newton_(scene.correction_solver == "newton"),
-      poisson_(comm, f, owned, pinned_id, scene.ppe_tolerance) {}
+      poisson_(domain.poisson(scene, false)) {}
 
-void HaloDensityCorrection::particles_moved() {
+void HaloDensityCorrection::forget_warm_start() {
   pstar_.clear();
-  poisson_.particles_moved();
+  poisson_->reset();
+}
+
+void HaloDensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) {
+  permute(pstar_, from);
+  poisson_->reset();
 }
 
 void HaloDensityCorrection::fixed_point_step(const std::vector<double>& s, double* y) {
@@ -26,30 +32,15 @@ void HaloDensityCorrection::fixed_point_step(const std::vector<double>& s, doubl
   const std::size_t n = L.n;
   // Eq. 58 with the Laplacian of C&R eq. 19 at rho = rho0: the PPE's rows with the source 1 -
   // rho~/rho0 in place of div u* and dt = 1 (as one process's assemble_ppe(f, source, 1.0)).
-  poisson_.solve(s, 1.0, pstar_);
+  poisson_->solve(f_.evaluator().fields(), s, 1.0, pstar_);
   ++stats_.iterations;
   // Eq. 57: r_a -= grad p*_a / rho0, the gradient in difference form with the copies' p* their owners'.
   std::vector<double> dx, dy;
-  correction_shift(f_.evaluator().fields(), poisson_.with_halo(pstar_), dx, dy, n);
+  correction_shift(f_.evaluator().fields(), domain_.with_halo(pstar_), dx, dy, n);
   for (std::size_t a = 0; a < n; ++a) {
     y[L.pos(0) + a] += dx[a];
     if (L.dim == 2) y[L.pos(1) + a] += dy[a];
   }
-}
-
-CorrectionSpan rank_correction_span(const parallel::Communicator& comm, const HaloRhs& f, std::size_t own) {
-  CorrectionSpan s;
-  s.own = own;
-  s.sum = [&comm](double v) { return comm.sum(v); };
-  s.extend = [&f](std::vector<double>& v) {
-    const std::vector<double> copies = f.halo_values(v);
-    v.insert(v.end(), copies.begin(), copies.end());
-    if (v.size() != f.evaluator().fields().n_real)
-      throw std::logic_error("density correction: the halo values do not match the evaluator's points");
-  };
-  s.gather = [&comm](const std::vector<double>& v) { return comm.allgatherv(v); };
-  s.any = [&comm](bool v) { return comm.max(static_cast<std::int64_t>(v)) > 0; };
-  return s;
 }
 
 void HaloDensityCorrection::apply(double t, double* y) {
@@ -57,14 +48,14 @@ void HaloDensityCorrection::apply(double t, double* y) {
   const bool record = stats_.applications == 0;
   f_.eval(t, y, nullptr);
   std::vector<double> s;
-  double error = density_fluctuation(f_.evaluator().fields(), span(), s);
+  double error = density_fluctuation(f_.evaluator().fields(), domain_.correction_span(), s);
   if (error <= threshold_) return;
   ++stats_.applications;
   if (record) stats_.first_history.push_back(error);
   if (newton_) {
     const NewtonCorrectionResult r = correct_density_newton(
         [&](const double* state) { f_.eval(t, state, nullptr); },
-        [&]() -> const FluidFields& { return f_.evaluator().fields(); }, [&] { return span(); }, owned_.layout(), y,
+        [&]() -> const FluidFields& { return f_.evaluator().fields(); }, [&] { return domain_.correction_span(); }, owned_.layout(), y,
         max_iterations_, threshold_, spacing_);
     stats_.iterations += r.iterations;
     error = r.error;
@@ -76,7 +67,7 @@ void HaloDensityCorrection::apply(double t, double* y) {
       // only wanted for the recorded history.
       if (it + 1 < max_iterations_ || record) {
         f_.eval(t, y, nullptr);
-        error = density_fluctuation(f_.evaluator().fields(), span(), s);
+        error = density_fluctuation(f_.evaluator().fields(), domain_.correction_span(), s);
       }
     }
   }

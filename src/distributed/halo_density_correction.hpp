@@ -1,9 +1,9 @@
 // The Pozorski-Wawrenczuk position correction (Szewc et al. 2012 eqs. 57-59) on one rank of a
-// decomposed run, after each step's projection (halo_projection.hpp), as DensityCorrection does
+// decomposed run, after each step's projection (halo_domain.hpp), as DensityCorrection does
 // after one process's: when the r.m.s. fluctuation of the summation density over all particles
 // exceeds method.correction_threshold, Newton steps with the exact derivative of the summation
 // density (projection/correction/correction_newton.hpp) move the rank's particles. The iteration is one
-// process's, run over a CorrectionSpan: sums (means, r.m.s., BiCGSTAB's inner products) over the
+// process's, run over the domain's CorrectionSpan: sums (means, r.m.s., BiCGSTAB's inner products) over the
 // ranks, the potential p and the shifts of the rank's particles handed to their halo copies before
 // a pair loop reads them, the Jacobi preconditioner's median over every rank's diagonal. Every
 // rank takes the same Newton and Krylov iterations and the same accept/halve decisions.
@@ -15,48 +15,42 @@
 // particle replaced by p* = 0, the last solution the next warm start (dropped when particles
 // migrate). KINSOL is refused on ranks by check_distributable.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "core/scene.hpp"
-#include "distributed/halo_poisson.hpp"
 #include "distributed/halo_rhs.hpp"
 #include "distributed/rank_particles.hpp"
-#include "parallel/communicator.hpp"
 #include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/correction/correction_newton.hpp"
+#include "projection/particle_domain.hpp"
 
 namespace arksph::distributed {
 
-// The correction's span on a rank (correction_newton.hpp): the rank's `own` particles, sums over
-// the ranks, the halo copies' values from their owners, every rank's values gathered. Collective in
-// each of its reductions.
-CorrectionSpan rank_correction_span(const parallel::Communicator& comm, const HaloRhs& f, std::size_t own);
-
-class HaloDensityCorrection {
+class HaloDensityCorrection : public PositionCorrection {
  public:
-  // pinned_id: the global id of the particle whose p* is pinned to 0 (the fixed point's Poisson problem).
-  HaloDensityCorrection(const Scene& scene, const parallel::Communicator& comm, HaloRhs& f,
-                        const RankParticles& owned, std::int64_t pinned_id);
+  // domain: the rank's (halo_domain.hpp), over f and owned; the fixed point's Poisson back-end is its.
+  HaloDensityCorrection(const Scene& scene, ParticleDomain& domain, HaloRhs& f, const RankParticles& owned);
   // Collective. Corrects the positions of the rank's state y (time t) in place.
-  void apply(double t, double* y);
-  // The rank's particles changed (migration, a new deal): no warm start, a new hierarchy.
-  void particles_moved();
+  void apply(double t, double* y) override;
   // applications, iterations and first_history are global (the same on every rank), seconds this rank's.
-  const CorrectionStats& stats() const { return stats_; }
+  const CorrectionStats& stats() const override { return stats_; }
+  // The rank's particles changed (migration, a new deal): no warm start, a new hierarchy.
+  void forget_warm_start() override;
+  void permute_particles(const std::vector<std::uint32_t>& from) override;
 
  private:
-  CorrectionSpan span() const { return rank_correction_span(comm_, f_, owned_.layout().n); }
   // One fixed-point iteration (eq. 58 solved, eq. 57 applied) from the fields of y; s: the density
   // fluctuation of the rank's particles.
   void fixed_point_step(const std::vector<double>& s, double* y);
-  const parallel::Communicator& comm_;
+  ParticleDomain& domain_;
   HaloRhs& f_;
   const RankParticles& owned_;
   double threshold_;
   int max_iterations_;
   double spacing_;
   bool newton_;
-  HaloPoisson poisson_;  // the fixed point's
+  std::unique_ptr<ParticlePoisson> poisson_;  // the fixed point's
   std::vector<double> pstar_;  // the fixed point's last solution, the rank's particles
   CorrectionStats stats_;
 };

@@ -1,8 +1,6 @@
 #include "distributed/halo_poisson.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <limits>
 
 namespace arksph::distributed {
 
@@ -10,40 +8,13 @@ HaloPoisson::HaloPoisson(const parallel::Communicator& comm, const HaloRhs& f, c
                          std::int64_t pinned_id, double tolerance)
     : comm_(comm), f_(f), owned_(owned), pinned_id_(pinned_id), solver_(comm, tolerance) {}
 
-void HaloPoisson::particles_moved() {
+void HaloPoisson::reset() {
   numbered_ = false;
   solver_.invalidate();  // the hierarchy was set up on the old numbering
 }
 
-std::vector<double> HaloPoisson::with_halo(const std::vector<double>& own) const {
-  std::vector<double> all(own);
-  const std::vector<double> copies = f_.halo_values(own);
-  all.insert(all.end(), copies.begin(), copies.end());
-  return all;
-}
-
-std::pair<std::vector<double>, std::vector<double>> HaloPoisson::with_halo(const std::vector<double>& a,
-                                                                         const std::vector<double>& b) const {
-  std::vector<std::vector<double>> copies = f_.halo_values(std::vector<const std::vector<double>*>{&a, &b});
-  std::pair<std::vector<double>, std::vector<double>> all(a, b);
-  all.first.insert(all.first.end(), copies[0].begin(), copies[0].end());
-  all.second.insert(all.second.end(), copies[1].begin(), copies[1].end());
-  return all;
-}
-
-double HaloPoisson::level(const std::vector<double>& p, bool zero_min) const {
-  if (zero_min) {
-    double lowest = std::numeric_limits<double>::infinity();
-    for (double x : p) lowest = std::min(lowest, x);
-    return -comm_.max(-lowest);
-  }
-  double sum = 0;
-  for (double x : p) sum += x;
-  return comm_.sum(sum) / static_cast<double>(comm_.sum(static_cast<std::int64_t>(p.size())));
-}
-
-distributed_ppe::HypreSolveReport HaloPoisson::solve(const std::vector<double>& source, double dt,
-                                                     std::vector<double>& p) {
+SolveReport HaloPoisson::solve(const FluidFields& f, const std::vector<double>& source, double dt,
+                               std::vector<double>& p) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = owned_.layout().n;
   if (!numbered_) {  // the rows of the rank's particles, after a deal or migration
@@ -58,7 +29,7 @@ distributed_ppe::HypreSolveReport HaloPoisson::solve(const std::vector<double>& 
   row_of_.resize(n + halo_rows.size());
   for (std::size_t a = 0; a < n; ++a) row_of_[a] = range_.first + static_cast<std::int64_t>(a);
   for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
-  distributed_ppe::assemble_rows(comm_, f_.evaluator().fields(), n, row_of_, range_, pinned_row_, source, dt, rows_);
+  distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, source, dt, rows_);
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (p.size() != n) p.assign(n, 0.0);
   return solver_.solve(rows_, p);

@@ -70,12 +70,12 @@ class HaloRhs {
   std::size_t halo_size() const { return halo_.size(); }
   // Collective. The values `own` of this rank's particles (one each, in the rank's order) at their
   // halo copies of the last eval, in the evaluator's order of the copies (the projection's row
-  // numbers and pressures: halo_projection.hpp). One all-to-all along the exchange's send lists.
+  // numbers and pressures: halo_domain.hpp). One all-to-all along the exchange's send lists.
   std::vector<double> halo_values(const std::vector<double>& own) const;
   // The same for several fields in one all-to-all: element k holds *own[k] at the copies.
   std::vector<std::vector<double>> halo_values(const std::vector<const std::vector<double>*>& own) const;
   // RhsEvaluator::set_slip_origin, kept for the evaluators of later exchanges (the projection's
-  // body-force split: the stages of a step carry the increment (t - t0) g, halo_projection.hpp).
+  // body-force split: the stages of a step carry the increment (t - t0) g, projection/projection.hpp).
   void set_slip_origin(bool on, double t0);
 
  private:

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 #include "core/errors.hpp"
 #include "core/particle_order.hpp"
 #include "projection/divergence_operator.hpp"
+#include "projection/ppe_assembly.hpp"
+#include "projection/velocity_correction.hpp"
 
 namespace arksph {
 
@@ -28,21 +31,19 @@ double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
   return speed / h;
 }
 
-double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs) {
+double relaxation_rate(const Scene& scene, double flow_rate) {
   const double beta = scene.projection == "orthogonal" ? scene.orthogonal_relaxation : scene.constraint_relaxation;
-  return beta * flow_rate(scene, rhs);
+  return beta * flow_rate;
 }
 
-ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
-    : rhs_(rhs),
+ConstrainedPressure::ConstrainedPressure(const Scene& scene, ParticleDomain& domain, double flow_rate)
+    : domain_(domain),
       split_(scene),
-      solver_key_(scene.ppe_solver),
-      tolerance_(scene.ppe_tolerance),
-      relaxation_(relaxation_rate(scene, rhs)),
+      relaxation_(relaxation_rate(scene, flow_rate)),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
-      solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)) {
+      poisson_(domain.poisson(scene, false)) {
   if (scene.density_correction == "pozorski_wawrenczuk")
-    density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate(scene, rhs));
+    density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate);
   if (scene.projection == "orthogonal") {
     if (split_.active())
       throw InputError(scene.source + ": method.projection = \"orthogonal\" does not take fluid.body_force with walls yet "
@@ -52,7 +53,7 @@ ConstrainedPressure::ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs)
 }
 
 void ConstrainedPressure::coarse_pressure(const double* u, const double* v) {
-  const FluidFields& f = rhs_.fields();
+  const FluidFields& f = domain_.fields();
   const std::size_t n = f.n_real;
   coarse_->assemble(f, operator_);  // operator_ assembled by the caller at these fields
   Eigen::VectorXd c = coarse_->restrict_weighted(f, div_.data());
@@ -73,9 +74,9 @@ void ConstrainedPressure::coarse_pressure(const double* u, const double* v) {
 }
 
 void ConstrainedPressure::project_orthogonal(double* u, double* v) {
-  const std::size_t n = rhs_.fields().n_real;
+  const std::size_t n = domain_.fields().n_real;
   div_.resize(n);
-  operator_.assemble(rhs_.fields());
+  operator_.assemble(domain_.fields());
   operator_.divergence(u, v, div_.data());
   const std::vector<double> keep = p_;
   coarse_pressure(nullptr, nullptr);
@@ -89,51 +90,32 @@ void ConstrainedPressure::project_orthogonal(double* u, double* v) {
 void ConstrainedPressure::forget_warm_start() {
   p_.clear();
   solution_.clear();
-  solver_ = make_poisson_solver(solver_key_, tolerance_);
+  poisson_->reset();
+}
+
+void ConstrainedPressure::particles_moved() {
+  solution_.clear();
+  poisson_->reset();
 }
 
 void ConstrainedPressure::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(p_, from);
   permute(solution_, from);
-  solver_ = make_poisson_solver(solver_key_, tolerance_);  // its stored structure is in the old order
+  poisson_->reset();  // its stored structure is in the old order
 }
 
-ConstraintReport ConstrainedPressure::solve_pressure(const std::vector<double>& w_div) {
-  const FluidFields& f = rhs_.fields();
-  const std::size_t n = f.n_real;
-  assemble_ppe(f, w_div, 1.0, system_);
-  if (solution_.size() != n) solution_.assign(n, 0.0);
-  const SolveReport rep = solver_->solve(system_.A, system_.b, solution_);
-  const double level = zero_min_level_ ? *std::min_element(solution_.begin(), solution_.end())
-                                       : std::accumulate(solution_.begin(), solution_.end(), 0.0) / static_cast<double>(n);
+SolveReport ConstrainedPressure::solve_pressure(const std::vector<double>& source, std::vector<double>& solution) {
+  const SolveReport rep = poisson_->solve(domain_.fields(), source, 1.0, solution);
+  const double level = domain_.level(solution, zero_min_level_);
+  const std::size_t n = solution.size();
   p_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) p_[a] = solution_[a] - level;
-  return {rep.iterations, rep.relative_residual};
+  for (std::size_t a = 0; a < n; ++a) p_[a] = solution[a] - level;
+  return rep;
 }
 
-void ConstrainedPressure::pressure_gradient(const std::vector<double>& p, bool with_steps) {
-  const FluidFields& f = rhs_.fields();
-  const std::size_t n = f.n_real;
-  gx_.resize(n);
-  gy_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    const double pa = p[a] / (f.rho[a] * f.rho[a]);
-    double sx = 0, sy = 0;
-    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double pb = with_steps ? f.point_pressure(p, b) : p[f.src[b]];
-      const double c = f.m[b] * (pb / (f.rho[b] * f.rho[b]) + pa) * F;
-      sx += c * rx;
-      sy += c * ry;
-    });
-    gx_[a] = sx;
-    gy_[a] = sy;
-  }
-}
-
-ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, const double* au, const double* av) {
-  const FluidFields& f = rhs_.fields();
-  const StateLayout& L = rhs_.layout();
+SolveReport ConstrainedPressure::constrain(const double* y, double* ydot, const double* au, const double* av) {
+  const FluidFields& f = domain_.fields();
+  const StateLayout L = domain_.layout();
   const std::size_t n = L.n;
   const double* u = y + L.vel(0);
   const double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
@@ -151,7 +133,7 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
       if (v) wy_[a] -= by_[a];
     }
   }
-  div_.resize(n);
+  div_.resize(f.n_real);
   if (coarse_) {
     // D(w - (u . grad) u): the motion term as the divergence of the convective acceleration, with
     // the same D as the constraint (coarse_pressure_space.hpp says why).
@@ -162,31 +144,43 @@ ConstraintReport ConstrainedPressure::constrain(const double* y, double* ydot, c
     }
     difference_divergence(f, wx_.data(), wy_.data(), div_.data());
   } else {
-    divergence_minus_motion(f, wx_.data(), wy_.data(), u, v, div_.data());
+    // w at every real point (the halo copies' from their owners: D w reads w at the neighbours),
+    // the velocities of the motion term those the fields were evaluated with.
+    std::vector<double> wx_all, wy_all;
+    if (v)
+      std::tie(wx_all, wy_all) = domain_.with_halo(wx_, wy_);  // one exchange for both components
+    else
+      wx_all = domain_.with_halo(wx_);
+    divergence_minus_motion(f, wx_all.data(), v ? wy_all.data() : nullptr, domain_.point_velocity(y, 0),
+                            v ? domain_.point_velocity(y, 1) : nullptr, div_.data());
   }
+  div_.resize(n);  // the own particles' sources
   if (split_.active()) {
     const std::vector<double> dg = split_.divergence(f), flux = neumann_source(f);
     for (std::size_t a = 0; a < n; ++a) div_[a] += dg[a] + flux[a];
   }
-  ConstraintReport rep;
+  SolveReport rep;
   if (coarse_) {
     operator_.assemble(f);
     coarse_pressure(u, v);
+    for (std::size_t a = 0; a < n; ++a) {
+      ydot[L.vel(0) + a] -= gx_[a];
+      if (v) ydot[L.vel(1) + a] -= gy_[a];
+    }
   } else {
-    rep = solve_pressure(div_);
-    pressure_gradient(p_, true);
+    rep = solve_pressure(div_, solution_);
+    // du/dt -= G p (C&R eq. 11), wall points at P_src + rho g . d, the halo copies' p their owners'.
+    subtract_pressure_gradient(f, domain_.with_halo(p_), 1.0, n, ydot + L.vel(0), v ? ydot + L.vel(1) : nullptr);
   }
-  for (std::size_t a = 0; a < n; ++a) {
-    ydot[L.vel(0) + a] -= gx_[a];
-    if (v) ydot[L.vel(1) + a] -= gy_[a];
-  }
-  if (density_) density_->add_velocity(f, ydot + L.pos(0), v ? ydot + L.pos(1) : nullptr);
+  if (density_)
+    density_->add_velocity(f, domain_.correction_span(), ydot + L.pos(0), v ? ydot + L.pos(1) : nullptr);
   return rep;
 }
 
-ConstraintReport ConstrainedPressure::project_velocity(double t, double* y) {
-  rhs_.eval(t, y, nullptr);
-  const StateLayout& L = rhs_.layout();
+SolveReport ConstrainedPressure::project_velocity(double t, double* y) {
+  domain_.refresh(t, y);
+  const FluidFields& f = domain_.fields();
+  const StateLayout L = domain_.layout();
   const std::size_t n = L.n;
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
@@ -194,18 +188,15 @@ ConstraintReport ConstrainedPressure::project_velocity(double t, double* y) {
     project_orthogonal(u, v);
     return {};
   }
+  div_.resize(f.n_real);
+  difference_divergence(f, domain_.point_velocity(y, 0), v ? domain_.point_velocity(y, 1) : nullptr, div_.data());
   div_.resize(n);
-  difference_divergence(rhs_.fields(), u, v, div_.data());
-  const std::vector<double> keep_p = p_, keep_solution = solution_;
-  solution_.assign(n, 0.0);  // phi is a potential, not the pressure: the pressure's warm start kept apart
-  const ConstraintReport rep = solve_pressure(div_);
-  pressure_gradient(p_, false);
-  for (std::size_t a = 0; a < n; ++a) {
-    u[a] -= gx_[a];
-    if (v) v[a] -= gy_[a];
-  }
+  // phi is a potential, not the pressure: its own cold start, the pressure and its warm start kept apart.
+  const std::vector<double> keep_p = p_;
+  std::vector<double> phi;
+  const SolveReport rep = solve_pressure(div_, phi);
+  subtract_pressure_gradient(f, domain_.with_halo(p_), 1.0, n, u, v, false);
   p_ = keep_p;
-  solution_ = keep_solution;
   return rep;
 }
 

@@ -51,6 +51,12 @@
 // pressure of the Taylor-Green vortex came out 2-3 times too large and the 32^2 vortex blew up. Along the ODE d(D_c u)/dt = -alpha D_c u with D_c = Pi^T V D (up to the
 // change of the volumes V), and the velocity change of each stage is the orthogonal projection
 // P = I - M^-1 D_c^T K_c^-1 D_c of a* + alpha u: idempotent to round-off.
+//
+// The class acts on a ParticleDomain (particle_domain.hpp): on one rank of a decomposed run the
+// source w = a* + alpha u reaches the halo copies from their owners before D reads it (the
+// evaluator computes no derivatives for the copies), the PPE's rows carry global numbers and hypre
+// solves them, the level is taken over every rank and p reaches the copies before G reads it. The
+// orthogonal projection is one process's (refused on ranks).
 #pragma once
 #include <memory>
 #include <vector>
@@ -60,8 +66,7 @@
 #include "projection/poisson/coarse_pressure_space.hpp"
 #include "projection/divergence_operator.hpp"
 #include "projection/correction/density_relaxation.hpp"
-#include "projection/poisson/poisson_solver.hpp"
-#include "projection/ppe_assembly.hpp"
+#include "projection/particle_domain.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
@@ -70,21 +75,17 @@ namespace arksph {
 double flow_rate(const Scene& scene, const RhsEvaluator& rhs);
 // alpha = beta U / h, beta = method.constraint_relaxation (method.orthogonal_relaxation for the
 // orthogonal projection).
-double relaxation_rate(const Scene& scene, const RhsEvaluator& rhs);
-
-struct ConstraintReport {
-  int iterations = 0;
-  double relative_residual = 0;
-};
+double relaxation_rate(const Scene& scene, double flow_rate);
 
 class ConstrainedPressure {
  public:
-  ConstrainedPressure(const Scene& scene, RhsEvaluator& rhs);
-  // After rhs.eval(t, y, ydot): adds -G p to the velocity block of ydot. (au, av): an acceleration
+  // flow_rate: U / h of the whole model (flow_rate above).
+  ConstrainedPressure(const Scene& scene, ParticleDomain& domain, double flow_rate);
+  // After f(t, y, ydot): adds -G p to the velocity block of ydot. (au, av): an acceleration
   // not in ydot that the constraint must see (IMEX: the implicit partition), or null.
-  ConstraintReport constrain(const double* y, double* ydot, const double* au, const double* av);
+  SolveReport constrain(const double* y, double* ydot, const double* au, const double* av);
   // u <- u - G phi with L phi = D u (one approximate projection of the start), fields refreshed here.
-  ConstraintReport project_velocity(double t, double* y);
+  SolveReport project_velocity(double t, double* y);
   const std::vector<double>& pressure() const { return p_; }
   // method.projection = "orthogonal": u <- P u for real velocities (u, v) at the fields of the last
   // evaluation (the projection itself, for its idempotence test).
@@ -92,31 +93,28 @@ class ConstrainedPressure {
   double relaxation() const { return relaxation_; }
   // The P-W correction as a velocity inside f (method.density_correction), or null.
   const DensityRelaxation* density_relaxation() const { return density_.get(); }
-  std::string solver_name() const { return solver_->name(); }
+  std::string solver_name() const { return poisson_->name(); }
   void forget_warm_start();
   void permute_particles(const std::vector<std::uint32_t>& from);
+  // The particles moved to other ranks: no warm start, the solver set up anew (p_ stays, for the frame).
+  void particles_moved();
 
  private:
-  // p_ from L p = w_div (source w_div), at the fields of the last eval; returns the solver's report.
-  ConstraintReport solve_pressure(const std::vector<double>& w_div);
-  // (gx, gy) = G p_ (C&R eq. 11: sum_b m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab).
-  // with_steps: wall points at P_src + rho ghost_dp (the pressure), or at P_src (a potential).
-  void pressure_gradient(const std::vector<double>& p, bool with_steps);
+  // p_ from L p = source, at the fields of the last eval, into solution (warm start in); returns
+  // the solver's report.
+  SolveReport solve_pressure(const std::vector<double>& source, std::vector<double>& solution);
   // The orthogonal projection's pressure and gradient (gx_, gy_) for the source div_ of the last
   // evaluation, (u, v) the velocities that move the particles across the grid.
   void coarse_pressure(const double* u, const double* v);
 
-  RhsEvaluator& rhs_;
+  ParticleDomain& domain_;
   BodyForceSplit split_;
-  std::string solver_key_;
-  double tolerance_;
   double relaxation_;
   bool zero_min_level_;
-  std::unique_ptr<PoissonSolver> solver_;
+  std::unique_ptr<ParticlePoisson> poisson_;
   std::unique_ptr<DensityRelaxation> density_;
   std::unique_ptr<CoarsePressureSpace> coarse_;  // method.projection = "orthogonal"
   DivergenceOperator operator_;
-  PoissonSystem system_;
   std::vector<double> p_, solution_, div_, udiv_, cx_, cy_, gx_, gy_, wx_, wy_, bx_, by_;
 };
 

@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "core/param_builder.hpp"
 #include "core/particle_order.hpp"
+#include "core/particles.hpp"
 #include "core/scheme.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "projection/velocity_correction.hpp"
@@ -85,37 +86,29 @@ const std::vector<Param>& projection_time_params() {
   return params;
 }
 
-Projection::Projection(const Scene& scene, RhsEvaluator& rhs)
-    : rhs_(rhs),
+Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domain, double flow_rate)
+    : domain_(std::move(domain)),
       split_(scene),
-      solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
-      tolerance_(scene.ppe_tolerance),
       centre_positions_(scene.centre_positions),
       exact_operator_(scene.ppe_operator == "exact"),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       pressure_offset_(scene.ppe_pressure_offset) {
-  if (scheme_traits(scene.scheme).grid) grid_ = std::make_unique<GridProjection>(scene);
+  if (scheme_traits(scene.scheme).grid)
+    grid_ = std::make_unique<GridProjection>(scene);
+  else
+    poisson_ = domain_->poisson(scene, exact_operator_);
   // The constrained projection carries the correction inside f (ConstrainedPressure).
-  if (scene.density_correction != "none" && !scene.pressure_in_f())
-    correction_ = std::make_unique<DensityCorrection>(scene, rhs);
+  if (scene.density_correction != "none" && !scene.pressure_in_f()) correction_ = domain_->position_correction(scene);
   // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
   slip_origin_ = split_.active() && scene.projection_points == "step" && !scene.pressure_in_f();
-  if (scene.pressure_in_f()) {
-    constrained_ = std::make_unique<ConstrainedPressure>(scene, rhs);
-    RhsOptions o = rhs_.options();
-    o.pairs_at_every_f = true;  // constrain() walks the pairs of each f
-    rhs_.set_options(o);
-  }
+  if (scene.pressure_in_f()) constrained_ = std::make_unique<ConstrainedPressure>(scene, *domain_, flow_rate);
 }
 
 void Projection::constrain(const double* y, double* ydot, const double* au, const double* av) {
   const auto t0 = std::chrono::steady_clock::now();
-  const ConstraintReport rep = constrained_->constrain(y, ydot, au, av);
-  ++stats_.solves;
-  stats_.iterations += rep.iterations;
-  stats_.last_residual = rep.relative_residual;
-  stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
+  const SolveReport rep = constrained_->constrain(y, ydot, au, av);
+  stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
   const double s = since(t0);
   stats_.seconds += s;
   stats_.solve_seconds += s;
@@ -123,7 +116,7 @@ void Projection::constrain(const double* y, double* ydot, const double* au, cons
 
 void Projection::project_initial(double t, double* y) {
   if (!constrained_) return;
-  const ConstraintReport rep = constrained_->project_velocity(t, y);
+  const SolveReport rep = constrained_->project_velocity(t, y);
   stats_.max_residual = std::max(stats_.max_residual, rep.relative_residual);
 }
 
@@ -131,25 +124,34 @@ void Projection::forget_warm_start() {
   if (constrained_) constrained_->forget_warm_start();
   pressure_.clear();
   solution_.clear();
-  solver_ = make_poisson_solver(solver_->name(), tolerance_);
+  if (poisson_) poisson_->reset();
+  if (correction_) correction_->forget_warm_start();
+}
+
+void Projection::particles_moved() {
+  if (constrained_) constrained_->particles_moved();
+  solution_.clear();
+  y_prev_.clear();
+  if (poisson_) poisson_->reset();
   if (correction_) correction_->forget_warm_start();
 }
 
 void Projection::permute_particles(const std::vector<std::uint32_t>& from) {
+  const StateLayout L = domain_->layout();
   permute(pressure_, from);
   permute(solution_, from);
-  if (y_prev_.size() == rhs_.layout().size()) permute_state(rhs_.layout(), y_prev_.data(), from);
+  if (y_prev_.size() == L.size()) permute_state(L, y_prev_.data(), from);
   if (correction_) correction_->permute_particles(from);
   if (constrained_) constrained_->permute_particles(from);
   // A solver's stored structure (KLU's symbolic analysis, cg_amg's aggregates) is in the old order.
-  solver_ = make_poisson_solver(solver_->name(), tolerance_);
+  if (poisson_) poisson_->reset();
 }
 
 void Projection::begin_step(double t, const double* y) {
   // The stages of a step projected at its end carry (t - t_n) g (body_force_split.hpp).
-  rhs_.set_slip_origin(slip_origin_, t);
+  domain_->set_slip_origin(slip_origin_, t);
   t_prev_ = t;
-  y_prev_.assign(y, y + rhs_.layout().size());
+  y_prev_.assign(y, y + domain_->layout().size());
 }
 
 void Projection::project_stage(double t, double* y) {
@@ -162,14 +164,14 @@ void Projection::project_stage(double t, double* y) {
 
 void Projection::project(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();
-  const StateLayout& L = rhs_.layout();
+  const StateLayout L = domain_->layout();
   const double dt = t - t_prev_;
-  if (dt <= 0) return;
+  if (dt <= 0) return;  // the same on every rank (the same steps)
   project_velocities(dt, t, y);
 
   // 4. Positions centred in time, C&R eq. 12, plus the step's regularisation displacement dt du_s
   // (du_s of the fields at r*, refreshed by the projection) when a regularisation part is on.
-  if (centre_positions_ && y_prev_.size() == L.size()) centre_positions(L, rhs_.fields(), y_prev_, dt, y);
+  if (centre_positions_ && y_prev_.size() == L.size()) centre_positions(L, domain_->fields(), y_prev_, dt, y);
   stats_.seconds += since(t0);
 
   // 5. Density correction, Szewc eqs. 57-58 (timed separately).
@@ -177,17 +179,19 @@ void Projection::project(double t, double* y) {
 }
 
 void Projection::project_velocities(double dt, double t, double* y) {
-  const StateLayout& L = rhs_.layout();
+  const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-  // the source sees u* - dt g; the flux of g is the PPE's Neumann data
+  // 1. Fields at r* with u* (on ranks the halo copies take u* from their owners). The source sees
+  // u* - dt g; the flux of g is the PPE's Neumann data.
   if (split_.active()) split_.remove_step(n, y + L.pos(0), L.dim == 2 ? y + L.pos(1) : nullptr, t, dt, u, v);
-  rhs_.set_slip_origin(false, 0.0);  // the increment is out of u* below: plain images
-  rhs_.eval(t, y, nullptr);  // ghosts and neighbours at r*, velocities u* (less dt g)
+  domain_->set_slip_origin(false, 0.0);  // the increment is out of u* above: plain images
+  domain_->refresh(t, y);
   if (split_.active()) split_.restore_velocities(u, v);
-  const FluidFields& f = rhs_.fields();
-  // 2.-3. Pressure Poisson equation and velocity correction, on the particles or on the grid.
+  const FluidFields& f = domain_->fields();
+  // 2.-3. Pressure Poisson equation and velocity correction, on the particles or on the grid. The
+  // source of the own particles (on ranks the halo copies' divergences are not used).
   const auto ta = std::chrono::steady_clock::now();
   std::vector<double> div = difference_divergence_ ? divergence_difference(f) : divergence_cummins_rudman(f);
   if (split_.active()) {
@@ -197,7 +201,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
                                      : exact_operator_ ? neumann_source_exact(f) : neumann_source(f);
     for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
   }
-  if (!grid_) stats_.assembly_seconds += since(ta);
+  stats_.assembly_seconds += since(ta);
   if (grid_) {
     project_on_grid(f, div, dt, y);
   } else {
@@ -206,43 +210,44 @@ void Projection::project_velocities(double dt, double t, double* y) {
 }
 
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
-  const StateLayout& L = rhs_.layout();
+  const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
-  const auto ta = std::chrono::steady_clock::now();
-  if (exact_operator_) system_ = assemble_ppe_exact(f, div, dt);
-  else assemble_ppe(f, div, dt, system_);
-  stats_.assembly_seconds += since(ta);
-  const PoissonSystem& sys = system_;
-  if (solution_.size() != n) solution_.assign(n, 0.0);
+  const double assembly_before = poisson_->assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
-  // solution_ keeps the pinned system's own solution (P_0 = 0) as the next warm start: a start
+  // solution_ keeps the pinned system's own solution (one P = 0) as the next warm start: a start
   // shifted by a constant would hand CG a smooth error, its slowest mode.
-  const SolveReport rep = solver_->solve(sys.A, sys.b, solution_);
-  stats_.solve_seconds += since(ts);
+  const SolveReport rep = poisson_->solve(f, div, dt, solution_);
+  const double assembly = poisson_->assembly_seconds() - assembly_before;
+  stats_.assembly_seconds += assembly;
+  stats_.solve_seconds += since(ts) - assembly;
+  stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
   // The level of P is free (Neumann walls) but matters to the symmetric gradient of eq. 11 on
-  // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract).
-  const double level = zero_min_level_ ? *std::min_element(solution_.begin(), solution_.end())
-                                       : std::accumulate(solution_.begin(), solution_.end(), 0.0) / static_cast<double>(n);
+  // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract), over
+  // every particle, then the offset.
+  const double level = domain_->level(solution_, zero_min_level_);
   pressure_.resize(n);
   for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
-  stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
 
-  // 3. Velocity correction, C&R eq. 11.
+  // 3. Velocity correction, C&R eq. 11, with P at every real point of the fields (on ranks the
+  // halo copies' their owners'); ghosts carry their source's P, plus the hydrostatic step under a
+  // body force (FluidFields::point_pressure).
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-  subtract_pressure_gradient(f, pressure_, dt, n, u, v);
+  subtract_pressure_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
 }
 
 void Projection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
-  const StateLayout& L = rhs_.layout();
+  const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
   const auto ts = std::chrono::steady_clock::now();
-  GridCorrection c = grid_->solve(f, div, dt);
+  // On ranks each deposits its own particles and the cell sums are combined: every rank solves the
+  // whole grid problem and interpolates at its own particles.
+  GridCorrection c = grid_->solve(f, n, div, dt, domain_->cell_combine());
   stats_.solve_seconds += since(ts);
   stats_.record_solve(1, c.refactorised, c.residual);
   pressure_ = std::move(c.pressure);
-  if (zero_min_level_) {
-    const double level = *std::min_element(pressure_.begin(), pressure_.end());
+  if (zero_min_level_) {  // the grid's p has zero mean over the cells; P >= 0 over every particle
+    const double level = domain_->level(pressure_, true);
     for (double& p : pressure_) p -= level;
   }
   // Velocity correction, Szewc eq. 30, with (1/rho) grad p from the grid.

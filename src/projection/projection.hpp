@@ -10,6 +10,12 @@
 // viscous term at r_n where eq. 9 reads chi^n(r*): a difference of O(dt^2) per step.
 // Scheme isph-gpps replaces steps 2-3 by the grid-projected Poisson solver of Szewc et al. 2012 §4.2
 // (ProjectionGrid_Szewc2012.hpp): same source, Poisson equation on a regular grid, u = u* - dt a_grid.
+//
+// The projection acts on a ParticleDomain (particle_domain.hpp): one process's model
+// (local_domain.hpp), or one rank's particles with its halo (distributed/halo_domain.hpp), where the
+// PPE's rows carry global numbers and hypre solves them, the level is taken over every rank, P
+// reaches the halo copies from their owners, and the grid's cell sums are all-reduced (every rank
+// then solves the whole grid problem: the grid is replicated).
 #pragma once
 #include "core/parameter.hpp"
 #include <memory>
@@ -18,12 +24,10 @@
 
 #include "core/scene.hpp"
 #include "projection/ConstrainedPressure.hpp"
-#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
+#include "projection/correction/position_correction.hpp"
 #include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/body_force_split.hpp"
-#include "projection/poisson/poisson_solver.hpp"
-#include "projection/ppe_assembly.hpp"
-#include "rhs/evaluator.hpp"
+#include "projection/particle_domain.hpp"
 
 namespace arksph {
 
@@ -51,14 +55,16 @@ struct ProjectionStats {
 
 class Projection {
  public:
-  Projection(const Scene& scene, RhsEvaluator& rhs);
+  // flow_rate: U / h of the whole model (ConstrainedPressure.hpp: flow_rate), read by the constrained
+  // projection only.
+  Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domain, double flow_rate);
   // method.projection = "constrained": the pressure is part of f(t, y) (constrain), nothing is done
   // after a step or stage, and the initial velocity is projected once (project_initial).
   bool constrained() const { return constrained_ != nullptr; }
   const ConstrainedPressure* constraint() const { return constrained_.get(); }
   // After rhs.eval(t, y, ydot): the pressure acceleration added to ydot (au, av: an acceleration
   // the constraint must also see, IMEX's implicit partition, or null).
-  void constrain(const double* y, double* ydot, const double* au, const double* av);
+  void constrain(const double* y, double* ydot, const double* au = nullptr, const double* av = nullptr);
   // The start of a constrained run: u <- P u, so that D u = 0 at t = 0.
   void project_initial(double t, double* y);
   // Remembers the state at the start of the next step (for the centring of eq. 12).
@@ -70,25 +76,27 @@ class Projection {
   void project_stage(double t, double* y);
   const std::vector<double>& pressure() const { return constrained_ ? constrained_->pressure() : pressure_; }
   const ProjectionStats& stats() const { return stats_; }
-  std::string solver_name() const { return grid_ ? "grid-klu" : constrained_ ? constrained_->solver_name() : solver_->name(); }
-  const DensityCorrection* correction() const { return correction_.get(); }
+  std::string solver_name() const { return grid_ ? "grid-klu" : constrained_ ? constrained_->solver_name() : poisson_->name(); }
+  const PositionCorrection* correction() const { return correction_.get(); }
   // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
   // factorisation), so that a run restarted from a checkpoint continues bit for bit.
   void forget_warm_start();
   // The particles re-ordered (RhsEvaluator::permute_particles): the warm starts and the last
   // pressure follow (new index i is old index from[i]).
   void permute_particles(const std::vector<std::uint32_t>& from);
+  // The particles moved to other ranks (a migration, a new deal): the solvers start cold; the
+  // pressure of the last projection stays (for the frame, by particle id).
+  void particles_moved();
 
  private:
   void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
   void project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
   void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
 
-  RhsEvaluator& rhs_;
+  std::unique_ptr<ParticleDomain> domain_;
   BodyForceSplit split_;           // the body force's wall flux as Neumann data (body_force_split.hpp)
   bool slip_origin_ = false;       // the stages' wall images take the increment (t - t_n) g
-  std::unique_ptr<PoissonSolver> solver_;
-  double tolerance_;
+  std::unique_ptr<ParticlePoisson> poisson_;
   bool centre_positions_;
   bool exact_operator_;
   bool difference_divergence_;
@@ -97,10 +105,9 @@ class Projection {
   double t_prev_ = 0;
   std::vector<double> y_prev_;
   std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)
-  std::vector<double> solution_;  // the Poisson solver's solution (P_0 = 0): the next warm start
-  PoissonSystem system_;          // the last PPE, kept for its storage
+  std::vector<double> solution_;  // the Poisson solver's solution (one P pinned to 0): the next warm start
   std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
-  std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
+  std::unique_ptr<PositionCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   std::unique_ptr<ConstrainedPressure> constrained_;  // only with projection = constrained
   ProjectionStats stats_;
 };

@@ -208,8 +208,7 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, double w
     j.set("imex", im);
   }
   Json timing = Json::object();
-  const bool reported = !ppe_solver_.empty();  // set_projection_report
-  const double ppe = reported ? ppe_stats_.seconds : model_.projection ? model_.projection->stats().seconds : 0.0;
+  const double ppe = model_.projection ? model_.projection->stats().seconds : 0.0;
   timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);
   timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
   if (stepping_seconds_ >= 0) timing.set("stepping", stepping_seconds_);
@@ -221,18 +220,18 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, double w
   // refresh, counted in neighbors and rhs too, so it is not subtracted.)
   timing.set("setup_and_integrator", wall_seconds - rt.neighbors - rt.terms - diagnostic_seconds_ - output_seconds_);
   if (model_.projection) {
-    const ProjectionStats& ps = reported ? ppe_stats_ : model_.projection->stats();
+    const ProjectionStats& ps = model_.projection->stats();
     Json ppe_json = Json::object();
-    ppe_json.set("solver", reported ? ppe_solver_ : model_.projection->solver_name()).set("solves", ps.solves);
+    ppe_json.set("solver", model_.projection->solver_name()).set("solves", ps.solves);
     ppe_json.set("solve_seconds", ps.solve_seconds).set("assembly_seconds", ps.assembly_seconds);
     ppe_json.set("seconds_per_solve", ps.solves ? ps.seconds / ps.solves : 0.0);
     ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
     if (const ConstrainedPressure* c = model_.projection->constraint()) ppe_json.set("constraint_relaxation_rate", c->relaxation());
     j.set("ppe", ppe_json);
-    const DensityCorrection* c = model_.projection->correction();
-    if (c || correction_stats_) {
-      const CorrectionStats& cs = correction_stats_ ? *correction_stats_ : c->stats();
+    const PositionCorrection* c = model_.projection->correction();
+    if (c) {
+      const CorrectionStats& cs = c->stats();
       Json cj = Json::object();
       cj.set("applications", cs.applications).set("iterations", cs.iterations);
       cj.set("seconds", cs.seconds).set("first_history", Json(cs.first_history));

@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "run/setup.hpp"
 #include "run/run_result.hpp"
 #include "diagnostics/flow_metrics.hpp"
@@ -53,14 +52,6 @@ class RunOutput {
   // (io/pvtp_writer.hpp), which the ranks write themselves; no whole frame is written.
   void set_pieces(int ranks) { pieces_ = ranks; }
   int frames() const { return frames_; }  // frames written so far: the number of the next one
-  // A run whose projection is not the model's (the decomposed ISPH run, distributed/halo_projection.hpp):
-  // summary.json's "ppe" from these counters and solver name.
-  void set_projection_report(const ProjectionStats& stats, const std::string& solver) {
-    ppe_stats_ = stats;
-    ppe_solver_ = solver;
-  }
-  // summary.json density_correction from these counters instead of the model's (a decomposed run).
-  void set_correction_report(const CorrectionStats& stats) { correction_stats_ = stats; }
   void set_reorders(long count, double seconds) {
     reorders_ = count;
     reorder_seconds_ = seconds;
@@ -95,9 +86,6 @@ class RunOutput {
   double stepping_seconds_ = -1;  // not set: no timing.stepping
   double cpu_seconds_ = -1;       // not set: no cpu_seconds
   double reorder_seconds_ = 0;
-  std::string ppe_solver_;  // empty: the model's projection reports itself
-  ProjectionStats ppe_stats_;
-  std::optional<CorrectionStats> correction_stats_;  // set_correction_report
   const double* projected_pressure() const;
 };
 

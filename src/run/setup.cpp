@@ -9,6 +9,7 @@
 #include "core/expression.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
+#include "projection/local_domain.hpp"
 #include "rhs/density/initial_density.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
@@ -92,7 +93,8 @@ Model build_model(const Scene& scene) {
   poll_setup_interrupt();
   if (scheme.projection) {
     set_activity("setting up the projection of " + std::to_string(model.particles.n) + " particles");
-    model.projection = std::make_unique<Projection>(scene, *model.rhs);
+    const double rate = scene.pressure_in_f() ? flow_rate(scene, *model.rhs) : 0.0;
+    model.projection = std::make_unique<Projection>(scene, std::make_unique<LocalDomain>(scene, *model.rhs), rate);
     if (scheme.grid) {
       const GridSpec g = gpps_grid(scene);
       model.terms.push_back("projection:gpps-klu:" + std::to_string(g.nx) + "x" + std::to_string(g.ny));

@@ -15,6 +15,7 @@
 
 #include "core/registry.hpp"
 #include "core/scene.hpp"
+#include "projection/correction/position_correction.hpp"
 #include "projection/poisson/poisson_solver.hpp"
 #include "rhs/evaluator.hpp"
 
@@ -25,22 +26,13 @@ const Registry<Selected>& density_corrections();
 // method.correction_solver: how the correction's Poisson problem is solved.
 const Registry<Selected>& correction_solvers();
 
-struct CorrectionStats {
-  long applications = 0;   // steps in which it ran
-  long iterations = 0;     // Poisson solves
-  double seconds = 0;
-  std::vector<double> first_history;  // r.m.s. relative density error before each iteration of the first application, and after the last
-};
-
-class DensityCorrection {
+class DensityCorrection : public PositionCorrection {
  public:
   DensityCorrection(const Scene& scene, RhsEvaluator& rhs);
-  // Corrects the positions in y (time t) in place.
-  void apply(double t, double* y);
-  const CorrectionStats& stats() const { return stats_; }
-  // The particles re-ordered: the warm start p* follows (new index i is old index from[i]).
-  void permute_particles(const std::vector<std::uint32_t>& from);
-  void forget_warm_start() {
+  void apply(double t, double* y) override;
+  const CorrectionStats& stats() const override { return stats_; }
+  void permute_particles(const std::vector<std::uint32_t>& from) override;
+  void forget_warm_start() override {
     pstar_.clear();
     solver_ = make_poisson_solver(solver_->name(), tolerance_);
   }

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
-#include "distributed/halo_density_correction.hpp"
 #include "distributed/halo_poisson.hpp"
 #include "distributed/rank_verdict.hpp"
 
@@ -75,10 +74,6 @@ std::unique_ptr<ParticlePoisson> HaloDomain::poisson(const Scene& scene, bool ex
   if (exact_operator)
     throw InputError(scene.source + ": method.ppe_operator = \"exact\" runs on one process only");
   return std::make_unique<HaloPoisson>(comm_, f_, owned_, pinned_id_, scene.ppe_tolerance);
-}
-
-std::unique_ptr<PositionCorrection> HaloDomain::position_correction(const Scene& scene) {
-  return std::make_unique<HaloDensityCorrection>(scene, *this, f_, owned_);
 }
 
 }  // namespace arksph::distributed

@@ -15,7 +15,6 @@
 //     particle 0. With unequal particle volumes the Neumann system is only approximately consistent
 //     and the pinned particle shows in the solution at the level of the inconsistency
 //     (docs/parallel.md); one process's particle 0 changes with its re-sorts.
-//   - position_correction: HaloDensityCorrection (halo_density_correction.hpp).
 // What runs on one process only (refused on several ranks by check_distributable): the orthogonal
 // projection, the density correction's KINSOL solver, and the exact operator (C&R eq. 18).
 #pragma once
@@ -47,7 +46,6 @@ class HaloDomain : public ParticleDomain {
   CellCombine cell_combine() const override;
   CorrectionSpan correction_span() const override;
   std::unique_ptr<ParticlePoisson> poisson(const Scene& scene, bool exact_operator) override;
-  std::unique_ptr<PositionCorrection> position_correction(const Scene& scene) override;
 
  private:
   const parallel::Communicator& comm_;

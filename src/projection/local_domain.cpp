@@ -4,7 +4,6 @@
 #include <chrono>
 #include <numeric>
 
-#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 
 namespace arksph {
 
@@ -38,10 +37,6 @@ double LocalDomain::level(const std::vector<double>& p, bool zero_min) const {
 
 std::unique_ptr<ParticlePoisson> LocalDomain::poisson(const Scene& scene, bool exact_operator) {
   return std::make_unique<LocalPoisson>(scene.ppe_solver, scene.ppe_tolerance, exact_operator);
-}
-
-std::unique_ptr<PositionCorrection> LocalDomain::position_correction(const Scene& scene) {
-  return std::make_unique<DensityCorrection>(scene, rhs_);
 }
 
 }  // namespace arksph

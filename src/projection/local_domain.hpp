@@ -46,7 +46,6 @@ class LocalDomain : public ParticleDomain {
   CellCombine cell_combine() const override { return {}; }
   CorrectionSpan correction_span() const override { return local_span(rhs_.fields()); }
   std::unique_ptr<ParticlePoisson> poisson(const Scene& scene, bool exact_operator) override;
-  std::unique_ptr<PositionCorrection> position_correction(const Scene& scene) override;
   RhsEvaluator& evaluator() { return rhs_; }
 
  private:

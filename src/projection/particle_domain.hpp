@@ -1,7 +1,8 @@
 // Where a projection's particles live, and how their pressure Poisson equation is solved: the two
 // things that differ between one process and one rank of a decomposed run. The projection after a
-// step (projection.hpp), the constrained projection (ConstrainedPressure.hpp) and the grid
-// projection are written once against these interfaces:
+// step (projection.hpp), the constrained projection (ConstrainedPressure.hpp), the grid projection
+// and the P-W correction (correction/DensityCorrection_PozorskiWawrenczuk.hpp) are written once
+// against these interfaces:
 //   - ParticleDomain: the state's particles (the rank's own ones, first among the evaluator's real
 //     points, then its halo copies), the evaluator's fields, and the collectives over every
 //     particle (the pressure's level, the halo copies' values from their owners, the grid's cell
@@ -21,7 +22,6 @@
 #include "core/particles.hpp"
 #include "core/scene.hpp"
 #include "projection/correction/correction_newton.hpp"
-#include "projection/correction/position_correction.hpp"
 #include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson/poisson_solver.hpp"
 #include "rhs/fluid_fields.hpp"
@@ -74,8 +74,6 @@ class ParticleDomain {
   virtual CorrectionSpan correction_span() const = 0;
   // A Poisson back-end of its own (exact_operator: C&R eq. 18 in place of eq. 19, one process only).
   virtual std::unique_ptr<ParticlePoisson> poisson(const Scene& scene, bool exact_operator) = 0;
-  // The position correction after a step (method.density_correction), with its own back-end.
-  virtual std::unique_ptr<PositionCorrection> position_correction(const Scene& scene) = 0;
 };
 
 }  // namespace arksph

@@ -99,7 +99,7 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
   else
     poisson_ = domain_->poisson(scene, exact_operator_);
   // The constrained projection carries the correction inside f (ConstrainedPressure).
-  if (scene.density_correction != "none" && !scene.pressure_in_f()) correction_ = domain_->position_correction(scene);
+  if (scene.density_correction != "none" && !scene.pressure_in_f()) correction_ = std::make_unique<DensityCorrection>(scene, *domain_);
   // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
   slip_origin_ = split_.active() && scene.projection_points == "step" && !scene.pressure_in_f();
   if (scene.pressure_in_f()) constrained_ = std::make_unique<ConstrainedPressure>(scene, *domain_, flow_rate);

@@ -24,7 +24,7 @@
 
 #include "core/scene.hpp"
 #include "projection/ConstrainedPressure.hpp"
-#include "projection/correction/position_correction.hpp"
+#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/body_force_split.hpp"
 #include "projection/particle_domain.hpp"
@@ -77,7 +77,7 @@ class Projection {
   const std::vector<double>& pressure() const { return constrained_ ? constrained_->pressure() : pressure_; }
   const ProjectionStats& stats() const { return stats_; }
   std::string solver_name() const { return grid_ ? "grid-klu" : constrained_ ? constrained_->solver_name() : poisson_->name(); }
-  const PositionCorrection* correction() const { return correction_.get(); }
+  const DensityCorrection* correction() const { return correction_.get(); }
   // Drops what the solvers carry from one step to the next (CG's initial guess, KLU's
   // factorisation), so that a run restarted from a checkpoint continues bit for bit.
   void forget_warm_start();
@@ -107,7 +107,7 @@ class Projection {
   std::vector<double> pressure_;  // P at the level chosen (zero mean or zero minimum)
   std::vector<double> solution_;  // the Poisson solver's solution (one P pinned to 0): the next warm start
   std::unique_ptr<GridProjection> grid_;  // only with scheme isph-gpps
-  std::unique_ptr<PositionCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
+  std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   std::unique_ptr<ConstrainedPressure> constrained_;  // only with projection = constrained
   ProjectionStats stats_;
 };

@@ -229,7 +229,7 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, double w
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
     if (const ConstrainedPressure* c = model_.projection->constraint()) ppe_json.set("constraint_relaxation_rate", c->relaxation());
     j.set("ppe", ppe_json);
-    const PositionCorrection* c = model_.projection->correction();
+    const DensityCorrection* c = model_.projection->correction();
     if (c) {
       const CorrectionStats& cs = c->stats();
       Json cj = Json::object();

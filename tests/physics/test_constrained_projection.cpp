@@ -18,6 +18,7 @@
 #include "projection/poisson/coarse_pressure_space.hpp"
 #include "projection/correction/correction_newton.hpp"
 #include "projection/divergence_operator.hpp"
+#include "projection/local_domain.hpp"
 #include "run/setup.hpp"
 #include "run/time_stepper.hpp"
 #include "study/order_study.hpp"
@@ -228,7 +229,8 @@ TEST_CASE("orthogonal projection: idempotent to round-off, the coarse divergence
       u[a] = std::sin(37.0 * static_cast<double>(a)) + y[L.vel(0) + a];
       v[a] = std::cos(53.0 * static_cast<double>(a)) + y[L.vel(1) + a];
     }
-    ConstrainedPressure cp(scene, rhs);
+    LocalDomain domain(scene, rhs);
+    ConstrainedPressure cp(scene, domain, flow_rate(scene, rhs));
     auto norm = [&](const std::vector<double>& x, const std::vector<double>& z) {
       double s = 0;
       for (std::size_t a = 0; a < L.n; ++a) s += f.m[a] * (x[a] * x[a] + z[a] * z[a]);

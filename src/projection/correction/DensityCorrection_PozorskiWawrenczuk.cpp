@@ -8,7 +8,6 @@
 #include "kernels/kernel.hpp"
 #include "projection/correction/correction_kinsol.hpp"
 #include "projection/correction/correction_newton.hpp"
-#include "projection/ppe_assembly.hpp"
 
 namespace arksph {
 
@@ -50,107 +49,83 @@ const Registry<Selected>& density_corrections() {
   return r;
 }
 
-DensityCorrection::DensityCorrection(const Scene& scene, RhsEvaluator& rhs)
-    : rhs_(rhs),
-      solver_(make_poisson_solver(scene.ppe_solver, scene.ppe_tolerance)),
-      tolerance_(scene.ppe_tolerance),
+DensityCorrection::DensityCorrection(const Scene& scene, ParticleDomain& domain)
+    : domain_(domain),
+      poisson_(domain.poisson(scene, false)),
       threshold_(scene.correction_threshold),
       max_iterations_(scene.correction_max_iterations),
       use_kinsol_(scene.correction_solver == "kinsol"),
       use_newton_(scene.correction_solver == "newton"),
       spacing_(scene.spacing) {}
 
-double DensityCorrection::density_error(double t, const double* y) {
-  rhs_.eval(t, y, nullptr);
-  const FluidFields& f = rhs_.fields();
-  const double w0 = f.kernel->W(0.0);
-  const std::size_t n = f.n_real;
-  std::vector<double> rel(n);
-  double mean = 0;
-  for (std::size_t a = 0; a < n; ++a) {
-    double d = w0;
-    f.pairs.for_pairs(a, [&](std::uint32_t, double, double, double, double w, double) { d += w; });
-    rel[a] = f.m[a] * d / f.rho0[a];  // Szewc eq. 21 over the reference density
-    mean += rel[a];
-  }
-  mean /= static_cast<double>(n);
-  // Fluctuation about the mean (Szewc eq. 56): the kernel's bias on a perfect lattice (Wendland
-  // +0.12 % at h = 2 dx) is a constant the correction cannot and need not remove.
-  double s = 0;
-  for (double r : rel) s += (r - mean) * (r - mean);
-  return std::sqrt(s / static_cast<double>(n));
-}
-
 void DensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(pstar_, from);
-  solver_ = make_poisson_solver(solver_->name(), tolerance_);  // its stored structure is in the old order
+  poisson_->reset();  // its stored structure is in the old order
+}
+
+void DensityCorrection::forget_warm_start() {
+  pstar_.clear();
+  poisson_->reset();
+}
+
+void DensityCorrection::fixed_point_step(const std::vector<double>& s, double* y) {
+  const StateLayout L = domain_.layout();
+  const std::size_t n = L.n;
+  const FluidFields& f = domain_.fields();
+  // Eq. 58 with the Laplacian of C&R eq. 19 at rho = rho0: the PPE with the source 1 - rho~/rho0
+  // (less its mean) in place of div u* and dt = 1.
+  poisson_->solve(f, s, 1.0, pstar_);
+  ++stats_.iterations;
+  // Eq. 57: r_a -= grad p*_a / rho0, the gradient in difference form (the halo copies' p* their owners').
+  std::vector<double> dx, dy;
+  correction_shift(f, domain_.with_halo(pstar_), dx, dy, n);
+  for (std::size_t a = 0; a < n; ++a) {
+    y[L.pos(0) + a] += dx[a];
+    if (L.dim == 2) y[L.pos(1) + a] += dy[a];
+  }
 }
 
 void DensityCorrection::apply(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();
-  const StateLayout& L = rhs_.layout();
   const bool record = stats_.applications == 0;
-  double err = density_error(t, y);
-  if (err <= threshold_) return;
+  // The r.m.s. fluctuation of rho~/rho0 about its mean (Szewc eq. 56): the kernel's bias on a
+  // perfect lattice (Wendland +0.12 % at h = 2 dx) is a constant the correction cannot and need not remove.
+  domain_.refresh(t, y);
+  std::vector<double> s;
+  double error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
+  if (error <= threshold_) return;
   ++stats_.applications;
+  if (record) stats_.first_history.push_back(error);
   if (use_newton_) {
-    if (record) stats_.first_history.push_back(err);
-    const NewtonCorrectionResult r = correct_density_newton(rhs_, t, y, max_iterations_, threshold_, spacing_);
+    const NewtonCorrectionResult r = correct_density_newton(
+        [&](const double* state) { domain_.refresh(t, state); },
+        [&]() -> const FluidFields& { return domain_.fields(); }, [&] { return domain_.correction_span(); },
+        domain_.layout(), y, max_iterations_, threshold_, spacing_);
     stats_.iterations += r.iterations;
-    if (record) stats_.first_history.push_back(r.error);
-    stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return;
-  }
-  if (use_kinsol_) {
-    if (record) stats_.first_history.push_back(err);
+    error = r.error;
+  } else if (use_kinsol_) {
+    const FluidFields& f = domain_.fields();
+    const std::size_t n = domain_.layout().n;
     double volume = 0;  // KINSOL's tolerance on max |F|, F ~ V x relative density fluctuation
-    for (std::size_t a = 0; a < L.n; ++a) volume += rhs_.fields().m[a] / rhs_.fields().rho[a];
-    volume /= static_cast<double>(L.n);
-    const KinsolCorrectionResult r = correct_density_kinsol(rhs_, t, y, max_iterations_, 0.1 * threshold_ * volume);
+    for (std::size_t a = 0; a < n; ++a) volume += f.m[a] / f.rho[a];
+    volume /= static_cast<double>(n);
+    const KinsolCorrectionResult r = correct_density_kinsol(domain_, t, y, max_iterations_, 0.1 * threshold_ * volume);
     stats_.iterations += r.iterations;
-    err = density_error(t, y);
-    if (record) stats_.first_history.push_back(err);
-    stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return;
+    domain_.refresh(t, y);
+    error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
+  } else {
+    for (int it = 0; it < max_iterations_ && error > threshold_; ++it) {
+      if (it > 0 && record) stats_.first_history.push_back(error);
+      fixed_point_step(s, y);
+      // The error after the shift decides whether to go on; after the last allowed solve it is
+      // only wanted for the recorded history (one right-hand-side evaluation saved per step otherwise).
+      if (it + 1 < max_iterations_ || record) {
+        domain_.refresh(t, y);
+        error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
+      }
+    }
   }
-  for (int it = 0; it < max_iterations_ && err > threshold_; ++it) {
-    if (record) stats_.first_history.push_back(err);
-    const FluidFields& f = rhs_.fields();
-    const std::size_t n = f.n_real;
-    // Source of eq. 58: 1 - rho~_a / rho0 (fields are fresh from density_error).
-    std::vector<double> source(n);
-    const double w0 = f.kernel->W(0.0);
-    for (std::size_t a = 0; a < n; ++a) {
-      double d = w0;
-      f.pairs.for_pairs(a, [&](std::uint32_t, double, double, double, double w, double) { d += w; });
-      source[a] = 1.0 - f.m[a] * d / f.rho0[a];
-    }
-    const PoissonSystem sys = assemble_ppe(f, source, 1.0);
-    if (pstar_.size() != n) pstar_.assign(n, 0.0);
-    solver_->solve(sys.A, sys.b, pstar_);
-    ++stats_.iterations;
-    // Eq. 57: r_a -= grad p*_a / rho0, gradient in difference form.
-    std::vector<double> dx(n, 0.0), dy(n, 0.0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < n; ++a) {
-      double gx = 0, gy = 0;
-      f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-        const double c = f.m[b] / f.rho[b] * (pstar_[f.src[b]] - pstar_[a]) * F;
-        gx += c * rx;
-        gy += c * ry;
-      });
-      dx[a] = -gx / f.rho0[a];
-      dy[a] = -gy / f.rho0[a];
-    }
-    for (std::size_t a = 0; a < n; ++a) {
-      y[L.pos(0) + a] += dx[a];
-      if (L.dim == 2) y[L.pos(1) + a] += dy[a];
-    }
-    // The error after the shift decides whether to go on; after the last allowed solve it is only
-    // wanted for the recorded history (one right-hand-side evaluation saved per step otherwise).
-    if (it + 1 < max_iterations_ || record) err = density_error(t, y);
-  }
-  if (record) stats_.first_history.push_back(err);
+  if (record) stats_.first_history.push_back(error);
   stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -9,15 +9,19 @@
 // gradient in difference form sum_b V_b (p*_b - p*_a) grad_a W_ab, which vanishes for constant p*.
 // Applied when the r.m.s. relative density error exceeds a threshold, up to a number of iterations
 // per step (Szewc apply it once per step).
+//
+// The correction acts on a ParticleDomain (projection/particle_domain.hpp): one process's, or one
+// rank's particles with their halo, where sums run over every rank, p* reaches the halo copies from
+// their owners before a pair loop reads it, and the fixed point's Poisson problem is the
+// projection's back-end (hypre's rows with global numbers on ranks). Every rank takes the same
+// iterations and the same decisions. KINSOL runs on one process only.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "core/registry.hpp"
 #include "core/scene.hpp"
-#include "projection/correction/position_correction.hpp"
-#include "projection/poisson/poisson_solver.hpp"
-#include "rhs/evaluator.hpp"
+#include "projection/particle_domain.hpp"
 
 namespace arksph {
 
@@ -26,28 +30,37 @@ const Registry<Selected>& density_corrections();
 // method.correction_solver: how the correction's Poisson problem is solved.
 const Registry<Selected>& correction_solvers();
 
-class DensityCorrection : public PositionCorrection {
+struct CorrectionStats {
+  long applications = 0;   // steps in which it ran
+  long iterations = 0;     // Poisson solves (Newton iterations)
+  double seconds = 0;
+  std::vector<double> first_history;  // r.m.s. relative density error before each iteration of the first application, and after the last
+};
+
+class DensityCorrection {
  public:
-  DensityCorrection(const Scene& scene, RhsEvaluator& rhs);
-  void apply(double t, double* y) override;
-  const CorrectionStats& stats() const override { return stats_; }
-  void permute_particles(const std::vector<std::uint32_t>& from) override;
-  void forget_warm_start() override {
-    pstar_.clear();
-    solver_ = make_poisson_solver(solver_->name(), tolerance_);
-  }
+  DensityCorrection(const Scene& scene, ParticleDomain& domain);
+  // Corrects the positions in y (the end of a step, time t) in place. Collective on ranks.
+  void apply(double t, double* y);
+  // applications, iterations and first_history are global (the same on every rank), seconds this rank's.
+  const CorrectionStats& stats() const { return stats_; }
+  // The particles re-ordered: the warm start p* follows (new index i is old index from[i]).
+  void permute_particles(const std::vector<std::uint32_t>& from);
+  // Drops the warm start and the solver's set-up (a restart, or the particles moved to other ranks).
+  void forget_warm_start();
 
  private:
-  double density_error(double t, const double* y);  // refreshes fields; r.m.s. of rho~/rho0 about its mean
-  RhsEvaluator& rhs_;
-  std::unique_ptr<PoissonSolver> solver_;
-  double tolerance_;
+  // One fixed-point iteration (eq. 58 solved, eq. 57 applied) at the fields of y; s: the density
+  // fluctuation of the own particles.
+  void fixed_point_step(const std::vector<double>& s, double* y);
+  ParticleDomain& domain_;
+  std::unique_ptr<ParticlePoisson> poisson_;  // the fixed point's
   double threshold_;
   int max_iterations_;
   bool use_kinsol_;
   bool use_newton_;
   double spacing_;
-  std::vector<double> pstar_;
+  std::vector<double> pstar_;  // the fixed point's last solution: the next warm start
   CorrectionStats stats_;
 };
 

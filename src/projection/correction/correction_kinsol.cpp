@@ -20,7 +20,7 @@ namespace arksph {
 
 namespace {
 struct Problem {
-  RhsEvaluator* rhs;
+  ParticleDomain* domain;
   double t;
   std::vector<double> y_tilde;  // state at r~ (positions to shift)
   std::vector<double> y_work;
@@ -32,7 +32,7 @@ struct Problem {
 
 // s_a - mean s at the positions shifted by p.
 void residual(Problem& P, const double* p, double* F) {
-  const StateLayout& L = P.rhs->layout();
+  const StateLayout L = P.domain->layout();
   const std::size_t n = L.n;
   const Eigen::Map<const Eigen::VectorXd> pv(p, static_cast<long>(n));
   const Eigen::VectorXd gx = P.Gx * pv, gy = P.Gy * pv;
@@ -41,8 +41,8 @@ void residual(Problem& P, const double* p, double* F) {
     P.y_work[L.pos(0) + a] -= gx(static_cast<long>(a)) / P.rho0[a];
     if (L.dim == 2) P.y_work[L.pos(1) + a] -= gy(static_cast<long>(a)) / P.rho0[a];
   }
-  P.rhs->eval(P.t, P.y_work.data(), nullptr);
-  const FluidFields& f = P.rhs->fields();
+  P.domain->refresh(P.t, P.y_work.data());
+  const FluidFields& f = P.domain->fields();
   const double w0 = f.kernel->W(0.0);
   std::vector<double> s(n);
   for (std::size_t a = 0; a < n; ++a) {
@@ -77,16 +77,16 @@ int kin_jacobian(N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector
 }
 }  // namespace
 
-KinsolCorrectionResult correct_density_kinsol(RhsEvaluator& rhs, double t, double* y, int max_iterations,
+KinsolCorrectionResult correct_density_kinsol(ParticleDomain& domain, double t, double* y, int max_iterations,
                                               double ftol) {
-  const StateLayout& L = rhs.layout();
+  const StateLayout L = domain.layout();
   const std::size_t n = L.n;
   Problem P;
-  P.rhs = &rhs;
+  P.domain = &domain;
   P.t = t;
   P.y_tilde.assign(y, y + L.size());
-  rhs.eval(t, y, nullptr);
-  const FluidFields& f = rhs.fields();
+  domain.refresh(t, y);
+  const FluidFields& f = domain.fields();
   P.A = assemble_ppe(f, std::vector<double>(n, 0.0), 1.0).A;
   P.volume.resize(n);
   P.rho0 = f.rho0;

@@ -8,7 +8,7 @@
 #pragma once
 #include <vector>
 
-#include "rhs/evaluator.hpp"
+#include "projection/particle_domain.hpp"
 
 namespace arksph {
 
@@ -17,8 +17,10 @@ struct KinsolCorrectionResult {
   int flag = 0;
 };
 
-// Shifts the positions in y (time t) in place. max_iterations: Newton iterations at most;
-// ftol: KINSOL's scaled residual tolerance.
-KinsolCorrectionResult correct_density_kinsol(RhsEvaluator& rhs, double t, double* y, int max_iterations, double ftol);
+// Shifts the positions in y (time t) of the domain's particles in place (one process: the Jacobian is
+// a serial KLU matrix). max_iterations: Newton iterations at most; ftol: KINSOL's scaled residual
+// tolerance.
+KinsolCorrectionResult correct_density_kinsol(ParticleDomain& domain, double t, double* y, int max_iterations,
+                                              double ftol);
 
 }  // namespace arksph

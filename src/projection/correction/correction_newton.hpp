@@ -14,7 +14,7 @@
 // r.m.s. density error (halved up to twice otherwise; if none of these helps, the positions are left
 // as they were and the iteration stops), so that the correction never makes the density worse.
 //
-// The same iteration runs on one rank of a decomposed run (distributed/halo_density_correction.hpp)
+// The same iteration runs on one rank of a decomposed run (distributed/halo_domain.hpp)
 // through a CorrectionSpan: the rank's own particles come first among the evaluator's real points,
 // the halo copies after them; sums and the diagonal's median are taken over all ranks, and a value
 // of the own particles reaches the copies from their owners before a pair loop reads it.

@@ -22,6 +22,7 @@ struct PartTraits {
   bool can_be_implicit = false;      // may go into the implicit partition of an IMEX split
   std::vector<std::string> schemes{};  // schemes it applies to (empty: every scheme)
   std::vector<std::string> state{};    // blocks it adds to the ODE state under WCSPH ("density", "energy")
+  bool one_process = false;          // runs on one process only (refused over MPI ranks)
   bool adds_state(const std::string& block) const {
     for (const auto& s : state)
       if (s == block) return true;

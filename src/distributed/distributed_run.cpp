@@ -22,6 +22,7 @@
 #ifdef ARKSPH_WITH_HYPRE
 #include "distributed/halo_domain.hpp"
 #endif
+#include "projection/correction/correction_solver.hpp"
 #include "projection/projection.hpp"
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_particles.hpp"
@@ -136,7 +137,8 @@ void check_distributable(const Scene& scene, int ranks) {
 #endif
     if (scene.projection == "orthogonal")
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
-    if (scene.density_correction != "none" && scene.correction_solver == "kinsol")
+    const auto* solver = correction_solvers().find(scene.correction_solver);
+    if (scene.density_correction != "none" && solver && solver->traits.one_process)
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != "approximate")
       throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);

@@ -1,24 +1,11 @@
 #include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 
 #include <chrono>
-#include <cmath>
 
 #include "core/param_builder.hpp"
-#include "core/particle_order.hpp"
-#include "kernels/kernel.hpp"
-#include "projection/correction/correction_kinsol.hpp"
 #include "projection/correction/correction_newton.hpp"
 
 namespace arksph {
-
-const Registry<Selected>& correction_solvers() {
-  static const Registry<Selected> r("correction_solver", "method.correction_solver", {
-      {"fixed_point", "repeated linear solves of Szewc et al. 2012 eq. 58"},
-      {"kinsol", "KINSOL Newton on eq. 59 with the Laplacian as frozen Jacobian (KLU)"},
-      {"newton", "Newton with the exact Jacobian of the summation density"},
-  });
-  return r;
-}
 
 namespace {
 // method.correction_solver = "auto": newton. With fixed steps of Szewc's single linear solve the
@@ -51,39 +38,12 @@ const Registry<Selected>& density_corrections() {
 
 DensityCorrection::DensityCorrection(const Scene& scene, ParticleDomain& domain)
     : domain_(domain),
-      poisson_(domain.poisson(scene, false)),
-      threshold_(scene.correction_threshold),
-      max_iterations_(scene.correction_max_iterations),
-      use_kinsol_(scene.correction_solver == "kinsol"),
-      use_newton_(scene.correction_solver == "newton"),
-      spacing_(scene.spacing) {}
+      solver_(correction_solvers().at(scene.correction_solver).make(scene, domain)),
+      threshold_(scene.correction_threshold) {}
 
-void DensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) {
-  permute(pstar_, from);
-  poisson_->reset();  // its stored structure is in the old order
-}
+void DensityCorrection::permute_particles(const std::vector<std::uint32_t>& from) { solver_->permute_particles(from); }
 
-void DensityCorrection::forget_warm_start() {
-  pstar_.clear();
-  poisson_->reset();
-}
-
-void DensityCorrection::fixed_point_step(const std::vector<double>& s, double* y) {
-  const StateLayout L = domain_.layout();
-  const std::size_t n = L.n;
-  const FluidFields& f = domain_.fields();
-  // Eq. 58 with the Laplacian of C&R eq. 19 at rho = rho0: the PPE with the source 1 - rho~/rho0
-  // (less its mean) in place of div u* and dt = 1.
-  poisson_->solve(f, s, 1.0, pstar_);
-  ++stats_.iterations;
-  // Eq. 57: r_a -= grad p*_a / rho0, the gradient in difference form (the halo copies' p* their owners').
-  std::vector<double> dx, dy;
-  correction_shift(f, domain_.with_halo(pstar_), dx, dy, n);
-  for (std::size_t a = 0; a < n; ++a) {
-    y[L.pos(0) + a] += dx[a];
-    if (L.dim == 2) y[L.pos(1) + a] += dy[a];
-  }
-}
+void DensityCorrection::forget_warm_start() { solver_->forget_warm_start(); }
 
 void DensityCorrection::apply(double t, double* y) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -92,40 +52,13 @@ void DensityCorrection::apply(double t, double* y) {
   // perfect lattice (Wendland +0.12 % at h = 2 dx) is a constant the correction cannot and need not remove.
   domain_.refresh(t, y);
   std::vector<double> s;
-  double error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
+  const double error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
   if (error <= threshold_) return;
   ++stats_.applications;
   if (record) stats_.first_history.push_back(error);
-  if (use_newton_) {
-    const NewtonCorrectionResult r = correct_density_newton(
-        [&](const double* state) { domain_.refresh(t, state); },
-        [&]() -> const FluidFields& { return domain_.fields(); }, [&] { return domain_.correction_span(); },
-        domain_.layout(), y, max_iterations_, threshold_, spacing_);
-    stats_.iterations += r.iterations;
-    error = r.error;
-  } else if (use_kinsol_) {
-    const FluidFields& f = domain_.fields();
-    const std::size_t n = domain_.layout().n;
-    double volume = 0;  // KINSOL's tolerance on max |F|, F ~ V x relative density fluctuation
-    for (std::size_t a = 0; a < n; ++a) volume += f.m[a] / f.rho[a];
-    volume /= static_cast<double>(n);
-    const KinsolCorrectionResult r = correct_density_kinsol(domain_, t, y, max_iterations_, 0.1 * threshold_ * volume);
-    stats_.iterations += r.iterations;
-    domain_.refresh(t, y);
-    error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
-  } else {
-    for (int it = 0; it < max_iterations_ && error > threshold_; ++it) {
-      if (it > 0 && record) stats_.first_history.push_back(error);
-      fixed_point_step(s, y);
-      // The error after the shift decides whether to go on; after the last allowed solve it is
-      // only wanted for the recorded history (one right-hand-side evaluation saved per step otherwise).
-      if (it + 1 < max_iterations_ || record) {
-        domain_.refresh(t, y);
-        error = density_fluctuation(domain_.fields(), domain_.correction_span(), s);
-      }
-    }
-  }
-  if (record) stats_.first_history.push_back(error);
+  const CorrectionOutcome out = solver_->correct(t, y, s, error, record ? &stats_.first_history : nullptr);
+  stats_.iterations += out.iterations;
+  if (record) stats_.first_history.push_back(out.error);
   stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

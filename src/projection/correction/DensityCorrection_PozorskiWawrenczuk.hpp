@@ -21,14 +21,13 @@
 
 #include "core/registry.hpp"
 #include "core/scene.hpp"
+#include "projection/correction/correction_solver.hpp"
 #include "projection/particle_domain.hpp"
 
 namespace arksph {
 
 // method.density_correction: "none" | "pozorski_wawrenczuk", with the correction's parameters.
 const Registry<Selected>& density_corrections();
-// method.correction_solver: how the correction's Poisson problem is solved.
-const Registry<Selected>& correction_solvers();
 
 struct CorrectionStats {
   long applications = 0;   // steps in which it ran
@@ -50,17 +49,9 @@ class DensityCorrection {
   void forget_warm_start();
 
  private:
-  // One fixed-point iteration (eq. 58 solved, eq. 57 applied) at the fields of y; s: the density
-  // fluctuation of the own particles.
-  void fixed_point_step(const std::vector<double>& s, double* y);
   ParticleDomain& domain_;
-  std::unique_ptr<ParticlePoisson> poisson_;  // the fixed point's
+  std::unique_ptr<CorrectionSolver> solver_;  // method.correction_solver
   double threshold_;
-  int max_iterations_;
-  bool use_kinsol_;
-  bool use_newton_;
-  double spacing_;
-  std::vector<double> pstar_;  // the fixed point's last solution: the next warm start
   CorrectionStats stats_;
 };
 

@@ -9,11 +9,14 @@
 
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <numeric>
 #include <string>
 
 #include "core/errors.hpp"
 #include "kernels/kernel.hpp"
+#include "projection/correction/correction_newton.hpp"
+#include "projection/correction/correction_solver.hpp"
 #include "projection/ppe_assembly.hpp"
 
 namespace arksph {
@@ -152,6 +155,39 @@ KinsolCorrectionResult correct_density_kinsol(ParticleDomain& domain, double t, 
   if (res.flag < 0 && res.flag != KIN_MAXITER_REACHED && res.flag != KIN_LINESEARCH_NONCONV)
     throw NumericalFailure("KINSOL density correction failed with flag " + std::to_string(res.flag));
   return res;
+}
+
+}  // namespace arksph
+
+namespace arksph {
+
+namespace {
+// method.correction_solver = "kinsol": correct_density_kinsol with KINSOL's tolerance on max |F| at a
+// tenth of the threshold times the mean particle volume (F ~ V x relative density fluctuation).
+class KinsolCorrection : public CorrectionSolver {
+ public:
+  KinsolCorrection(const Scene& scene, ParticleDomain& domain)
+      : domain_(domain), threshold_(scene.correction_threshold), max_iterations_(scene.correction_max_iterations) {}
+  CorrectionOutcome correct(double t, double* y, std::vector<double>& s, double, std::vector<double>*) override {
+    const FluidFields& f = domain_.fields();
+    const std::size_t n = domain_.layout().n;
+    double volume = 0;
+    for (std::size_t a = 0; a < n; ++a) volume += f.m[a] / f.rho[a];
+    volume /= static_cast<double>(n);
+    const KinsolCorrectionResult r = correct_density_kinsol(domain_, t, y, max_iterations_, 0.1 * threshold_ * volume);
+    domain_.refresh(t, y);
+    return {density_fluctuation(domain_.fields(), domain_.correction_span(), s), r.iterations};
+  }
+
+ private:
+  ParticleDomain& domain_;
+  double threshold_;
+  int max_iterations_;
+};
+}  // namespace
+
+std::unique_ptr<CorrectionSolver> make_correction_kinsol(const Scene& scene, ParticleDomain& domain) {
+  return std::make_unique<KinsolCorrection>(scene, domain);
 }
 
 }  // namespace arksph

@@ -1,10 +1,12 @@
 #include "projection/correction/correction_newton.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <numeric>
 
 #include "kernels/kernel.hpp"
+#include "projection/correction/correction_solver.hpp"
 
 namespace arksph {
 
@@ -299,6 +301,40 @@ NewtonCorrectionResult correct_density_newton(const std::function<void(const dou
     ++res.iterations;
   }
   return res;
+}
+
+}  // namespace arksph
+
+namespace arksph {
+
+namespace {
+// method.correction_solver = "newton": correct_density_newton over the domain (its refresh, fields
+// and span), up to method.correction_max_iterations Newton iterations.
+class NewtonCorrection : public CorrectionSolver {
+ public:
+  NewtonCorrection(const Scene& scene, ParticleDomain& domain)
+      : domain_(domain),
+        threshold_(scene.correction_threshold),
+        max_iterations_(scene.correction_max_iterations),
+        spacing_(scene.spacing) {}
+  CorrectionOutcome correct(double t, double* y, std::vector<double>&, double, std::vector<double>*) override {
+    const NewtonCorrectionResult r = correct_density_newton(
+        [&](const double* state) { domain_.refresh(t, state); },
+        [&]() -> const FluidFields& { return domain_.fields(); }, [&] { return domain_.correction_span(); },
+        domain_.layout(), y, max_iterations_, threshold_, spacing_);
+    return {r.error, r.iterations};
+  }
+
+ private:
+  ParticleDomain& domain_;
+  double threshold_;
+  int max_iterations_;
+  double spacing_;
+};
+}  // namespace
+
+std::unique_ptr<CorrectionSolver> make_correction_newton(const Scene& scene, ParticleDomain& domain) {
+  return std::make_unique<NewtonCorrection>(scene, domain);
 }
 
 }  // namespace arksph

@@ -97,6 +97,7 @@ struct Scene {
   bool force_sweep;  // the per-particle force terms share one neighbourhood gather
   std::string neighbor_storage;  // "pairs" (W, F stored) | "candidates" (kernel on the fly)
   double ppe_pressure_offset;  // isph: constant added to P after the level (background pressure)
+  std::string body_force_pressure;  // isph: "modified" (P = p - rho0 g . r) | "split" (rhs/pressure_gravity.hpp)
   std::string ppe_solver;  // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (docs/methods/isph.md)
   double ppe_tolerance;  // isph, cg: relative residual
   double gpps_spacing;  // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing

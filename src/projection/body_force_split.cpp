@@ -2,9 +2,11 @@
 
 #include <algorithm>
 
+#include "rhs/pressure_gravity.hpp"
+
 namespace arksph {
 
-BodyForceSplit::BodyForceSplit(const Scene& scene) : force_(scene.body_force, scene) {
+BodyForceSplit::BodyForceSplit(const Scene& scene) : force_(momentum_body_force(scene), scene) {
   bool walls = false;
   for (int s = 0; s < 2 * scene.dimension; ++s) walls = walls || scene.sides[s].kind == SideKind::wall;
   active_ = walls && !force_.zero();

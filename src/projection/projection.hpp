@@ -28,6 +28,7 @@
 #include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/body_force_split.hpp"
 #include "projection/particle_domain.hpp"
+#include "rhs/pressure_gravity.hpp"
 
 namespace arksph {
 
@@ -74,7 +75,11 @@ class Projection {
   // The "after each stage" variant: projects the velocities of a stage state z_i at t = t_n + c_i h
   // with dt = c_i h (steps 1-3 only: no centring, no density correction, which act on the step).
   void project_stage(double t, double* y);
-  const std::vector<double>& pressure() const { return constrained_ ? constrained_->pressure() : pressure_; }
+  // The pressure of the last projection (or constrained evaluation) at the own particles; with
+  // gravity in the pressure (rhs/pressure_gravity.hpp) its hydrostatic part added.
+  const std::vector<double>& pressure() const {
+    return gravity_.active ? reported_ : constrained_ ? constrained_->pressure() : pressure_;
+  }
   const ProjectionStats& stats() const { return stats_; }
   std::string solver_name() const { return grid_ ? "grid-klu" : constrained_ ? constrained_->solver_name() : poisson_->name(); }
   const DensityCorrection* correction() const { return correction_.get(); }
@@ -92,6 +97,8 @@ class Projection {
   void project_velocities(double dt, double t, double* y);  // steps 1-3 of the header comment
   void project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
   void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
+  // reported_ = P + rho0 (g . r - min g . r) at the fields' positions (gravity in the pressure).
+  void report(const std::vector<double>& p);
 
   std::unique_ptr<ParticleDomain> domain_;
   BodyForceSplit split_;           // the body force's wall flux as Neumann data (body_force_split.hpp)
@@ -110,6 +117,8 @@ class Projection {
   std::unique_ptr<DensityCorrection> correction_;  // only with density_correction = pozorski_wawrenczuk
   std::unique_ptr<ConstrainedPressure> constrained_;  // only with projection = constrained
   ProjectionStats stats_;
+  PressureGravity gravity_;        // the body force the pressure takes
+  std::vector<double> reported_;  // the pressure with its hydrostatic part (gravity_.active)
 };
 
 }  // namespace arksph

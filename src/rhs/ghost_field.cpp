@@ -1,4 +1,5 @@
 #include "rhs/ghost_field.hpp"
+#include "rhs/pressure_gravity.hpp"
 
 #include <cmath>
 
@@ -19,7 +20,7 @@ GhostField::GhostField(const Scene& scene, double support_radius, const std::vec
                        bool periodic_images)
     : depth_(ghost_depth(support_radius, any_needs_ghost_gradients(terms))),
       builder_(scene, depth_, periodic_images),
-      force_(scene.body_force, scene),
+      force_(momentum_body_force(scene), scene),
       hydrostatic_pressure_(scheme_traits(scene.scheme).weakly_compressible && !force_.zero()) {
   if (const auto make = wall_velocity_rules().at(scene.wall_velocity).make; make && scene.dimension == 2)
     wall_rule_ = make(scene, scene.spacing);

@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
+#include "rhs/pressure_gravity.hpp"
 #include "rhs/reference_speed.hpp"
 #include "rhs/term_registry.hpp"
 #include "rhs/terms.hpp"
@@ -54,7 +55,9 @@ std::vector<std::unique_ptr<Term>> terms_from_scene(const Scene& scene, double s
   // Particle regularisation: a velocity in dr/dt and the corrections of the carried fields.
   if (const auto& part = regularisations().at(scene.regularisation); part.make) terms.push_back(build(part, scene));
   if (scene.viscosity > 0) terms.push_back(build(viscosity_models().at(scene.viscosity_model), scene));
-  if (!is_zero_force(scene.body_force)) terms.push_back(make_body_force(scene.body_force));
+  // The components of g the pressure takes (rhs/pressure_gravity.hpp) are not a term.
+  const std::vector<std::string> force = momentum_body_force(scene);
+  if (!is_zero_force(force)) terms.push_back(make_body_force(force));
   if (const auto& part = wall_forces().at(scene.wall_force); part.make) terms.push_back(build(part, scene));
   return terms;
 }

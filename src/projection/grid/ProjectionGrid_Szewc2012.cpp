@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "projection/grid/grid_transfer.hpp"
+#include "rhs/pressure_gravity.hpp"
 
 namespace arksph {
 
@@ -45,7 +46,7 @@ GridProjection::GridProjection(const Scene& scene)
     : poisson_(gpps_grid(scene)),
       fallback_density_(scene.density),
       volume_relaxation_(scene.gpps_volume_relaxation),
-      force_(scene.body_force, scene.dimension) {
+      force_(momentum_body_force(scene), scene.dimension) {
   bool walls = false;
   for (int s = 0; s < 2 * scene.dimension; ++s) walls = walls || scene.sides[s].kind == SideKind::wall;
   wall_flux_ = walls && !force_.zero();

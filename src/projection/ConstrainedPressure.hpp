@@ -23,8 +23,10 @@
 // This is the route of Matsunaga (2025): the pressure equation written along the particle
 // trajectories, so that explicit Runge-Kutta applies to the whole system; with C&R's compact L it
 // is the projection of the velocity increment that Almgren, Bell & Crutchfield (2000) recommend for
-// approximate projections, applied at every stage. p is a smooth function of the state (its level
-// fixed by method.ppe_pressure_level = "zero_mean"), so it converges at the velocity's order.
+// approximate projections, applied at every stage. p is a smooth function of the state between the
+// changes of the particle its level is taken at (method.ppe_pressure_level: zero_min, P >= 0, so
+// that the pair force of C&R eq. 11 never attracts), and it converges at the velocity's order
+// (cases/isph_order).
 //
 // Under a body force g with walls, the source takes D(a* - g) + div g and the flux of g is the
 // Neumann data of L and G (wall points at P_src + rho g . d; projection/body_force_split.hpp): D's

@@ -1,7 +1,8 @@
-// Every shipped case scene run with every scheme through the command line, as a user switches
-// schemes: `arksph run SCENE --set method.scheme=S`. Nothing else is set but the end time (and the
-// output folder): a key whose right value depends on the scheme must come out right through its
-// "auto" default, not through this test.
+// Every shipped case scene run with every scheme, and isph with each of its projections, through the
+// command line, as a user switches them: `arksph run SCENE --set method.scheme=S` (and
+// `--set method.projection=P`). Nothing else is set but the end time (and the output folder): a key
+// whose right value depends on the scheme or the projection must come out right through its "auto"
+// default, not through this test.
 //
 // Label "cases" (this file as built): each run stops at kShortEnd of simulated time (or the scene's
 // own end when that is earlier), enough for the set-up, the first projections and a few steps.
@@ -47,7 +48,17 @@ constexpr double kEndTolerance = 1e-9;
 constexpr int kSecondsToEnd = 7200;
 constexpr int kSecondsShort = 300;
 
-const std::vector<std::string> kSchemes = {"wcsph", "isph", "isph-gpps"};
+// The variants each case runs with: a name (what the refusals below name) and its --set options.
+struct Variant {
+  std::string name;
+  std::string sets;
+};
+const std::vector<Variant> kVariants = {
+    {"wcsph", "--set method.scheme=wcsph"},
+    {"isph", "--set method.scheme=isph"},
+    {"isph-gpps", "--set method.scheme=isph-gpps"},
+    {"isph constrained", "--set method.scheme=isph --set method.projection=constrained"},
+};
 
 // Every scene file under cases/ (a TOML file with a [domain] table; sweeps and studies have none),
 // each with its TEST_CASE below.
@@ -89,17 +100,18 @@ void check_case(const std::string& scene, const std::vector<Refusal>& refusals =
   const std::string path = std::string(ARKSPH_SOURCE_DIR) + "/" + scene;
   const double scene_end = arksph::read_scene_file(path, {}).end;
   const double end = kToEnd ? scene_end : std::min(scene_end, kShortEnd);
-  for (const std::string& scheme : kSchemes) {
+  for (std::size_t v = 0; v < kVariants.size(); ++v) {
+    const std::string& scheme = kVariants[v].name;
+    const std::string& sets = kVariants[v].sets;
     CAPTURE(scene);
     CAPTURE(scheme);
     const fs::path out = fs::temp_directory_path() /
                          ("arksph_case_" + std::to_string(getpid()) + "_" + fs::path(scene).parent_path().filename().string() +
-                          "_" + fs::path(scene).stem().string() + "_" + scheme);
+                          "_" + fs::path(scene).stem().string() + "_" + std::to_string(v));
     fs::remove_all(out);
     char end_text[64];
     std::snprintf(end_text, sizeof end_text, "%.17g", end);
-    const auto o = run_cli("run " + path + " --quiet --out " + out.string() + " --set method.scheme=" + scheme +
-                               " --set time.end=" + end_text,
+    const auto o = run_cli("run " + path + " --quiet --out " + out.string() + " " + sets + " --set time.end=" + end_text,
                            "", kToEnd ? kSecondsToEnd : kSecondsShort);
     const auto refused = std::find_if(refusals.begin(), refusals.end(), [&](const Refusal& r) {
       return r.scheme == scheme && (kToEnd || !r.to_end_only);

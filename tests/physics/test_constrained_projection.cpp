@@ -96,11 +96,13 @@ TEST_CASE("constrained projection: the pressure of the Taylor-Green vortex at t 
   std::vector<double> y, yd;
   constrained_start(model, y, yd);
   const std::vector<double>& p = model.projection->pressure();
+  double mean = 0;  // the level of p is free: both at zero mean
+  for (std::size_t a = 0; a < L.n; ++a) mean += p[a] / static_cast<double>(L.n);
   double worst = 0;
   for (std::size_t a = 0; a < L.n; ++a) {
     const double x = y[L.pos(0) + a], z = y[L.pos(1) + a];
-    const double exact = -0.25 * (std::cos(4 * M_PI * x) + std::cos(4 * M_PI * z));  // zero mean, like p
-    worst = std::max(worst, std::abs(p[a] - exact));
+    const double exact = -0.25 * (std::cos(4 * M_PI * x) + std::cos(4 * M_PI * z));  // zero mean
+    worst = std::max(worst, std::abs(p[a] - mean - exact));
   }
   MESSAGE("max |p - p_exact| = ", worst, " (amplitude 0.5)");
   CHECK(worst <= 0.05);

@@ -89,11 +89,11 @@ TEST_CASE("auto: density_mode is summation for wcsph with phases, else continuit
   CHECK(read(kWalled + kPhase, {"method.scheme=isph-gpps"}).density_mode == "continuity");
 }
 
-TEST_CASE("auto: the PPE pressure level is zero_min but for the constrained projection") {
+TEST_CASE("auto: the PPE pressure level is zero_min for every projection") {
   for (const std::string& text : {kWalled, kPeriodic}) {
     CHECK(read(text, {"method.scheme=isph"}).ppe_pressure_level == "zero_min");
     CHECK(read(text, {"method.scheme=isph-gpps"}).ppe_pressure_level == "zero_min");
-    CHECK(read(text, {"method.scheme=isph", "method.projection=constrained"}).ppe_pressure_level == "zero_mean");
+    CHECK(read(text, {"method.scheme=isph", "method.projection=constrained"}).ppe_pressure_level == "zero_min");
   }
 }
 

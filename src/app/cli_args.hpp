@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.hpp"
+
 namespace arksph {
 
 inline std::vector<std::string> split_option_values(int argc, char** argv,
@@ -25,6 +27,14 @@ inline std::vector<std::string> split_option_values(int argc, char** argv,
     }
   }
   return args;
+}
+
+// The value of a --set: KEY=VALUE; InputError naming it otherwise (`--set time.end 1` gives "time.end").
+inline const std::string& set_value(const std::string& v) {
+  const auto eq = v.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + v + ": not KEY=VALUE (write it as one word, for example --set time.end=1)");
+  return v;
 }
 
 }  // namespace arksph

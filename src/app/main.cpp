@@ -106,7 +106,7 @@ int cmd_run(int argc, char** argv) {
     } else if (a == "--set" || a == "--out") {
       if (i + 1 >= count) throw arksph::InputError(a + ": missing value");
       const std::string& v = args[++i];
-      sets.push_back(a == "--set" ? v : "output.directory=" + toml_quote(v));
+      sets.push_back(a == "--set" ? arksph::set_value(v) : "output.directory=" + toml_quote(v));
     } else if (a == "--restart") {
       if (i + 1 >= count) throw arksph::InputError(a + ": missing checkpoint file");
       restart_path = args[++i];

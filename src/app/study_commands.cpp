@@ -53,7 +53,7 @@ StudyArgs parse_study_args(const std::string& kind, int argc, char** argv) {
     const std::string& a = list[i];
     if ((a == "--set" || a == "--out" || (takes_jobs && (a == "--jobs" || a == "-j"))) && i + 1 < count) {
       const std::string& v = list[++i];
-      if (a == "--set") args.sets.push_back(v);
+      if (a == "--set") args.sets.push_back(set_value(v));
       else if (a == "--out") args.out = v;
       else args.jobs = parse_int(a, v);
     } else if (a == "--quiet" || a == "-q") {
@@ -89,7 +89,7 @@ int cmd_batch(int argc, char** argv) {
       else opt.jobs = parse_int(a, v);
     } else if (a == "--set") {
       if (i + 1 >= count) throw InputError(a + ": missing value");
-      extra_sets.push_back(list[++i]);
+      extra_sets.push_back(set_value(list[++i]));
     } else if (a == "--quiet" || a == "-q") {
       opt.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -121,6 +121,11 @@ int cmd_study(int argc, char** argv) {
   const std::string kind = argv[0];
   if (kind != "order" && kind != "work-precision")
     throw InputError("study " + kind + ": unknown study (expected: order, work-precision)");
+  for (int i = 1; i < argc; ++i)
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {  // arksph study order --help
+      std::fputs(kStudyUsage, stdout);
+      return 0;
+    }
   const StudyArgs args = parse_study_args(kind, argc - 1, argv + 1);
   return kind == "order" ? cmd_order_study(args) : cmd_work_precision_study(args);
 }

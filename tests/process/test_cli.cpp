@@ -96,6 +96,30 @@ TEST_CASE("cli: bad options and missing files exit 2 with one line") {
   }
 }
 
+// `--set time.end 1` (a space for '='): the --set is named as malformed, where it used to be
+// answered with "more than one scene file given" (the 1 taken for a scene).
+TEST_CASE("cli: a --set without '=' exits 2 naming it as not KEY=VALUE") {
+  const std::string src = ARKSPH_SOURCE_DIR;
+  for (const std::string args : {"run " + src + "/cases/cavity_re100/scene.toml --set time.end 1",
+                                 "study order " + src + "/cases/isph_order/order_box.toml --set time.end 1",
+                                 "batch " + src + "/cases/sweeps/ci_sweep.toml --set time.end 1"}) {
+    CAPTURE(args);
+    const Outcome o = run_arksph(args);
+    CHECK(o.code == 2);
+    CHECK(count_lines(o.err) == 1);
+    CHECK(o.says("--set time.end: not KEY=VALUE"));
+  }
+}
+
+TEST_CASE("cli: study order --help and study work-precision --help print the study usage, exit 0") {
+  for (const char* args : {"study order --help", "study work-precision -h", "study --help"}) {
+    CAPTURE(args);
+    const Outcome o = run_arksph(args);
+    CHECK(o.code == 0);
+    CHECK(o.err.empty());
+  }
+}
+
 TEST_CASE("cli: an unwritable output directory exits 5 naming output.directory") {
   const fs::path file = fs::temp_directory_path() / "arksph_not_a_dir";
   std::ofstream(file) << "x";

@@ -1,6 +1,7 @@
 // Command-line arguments as strings, with "--opt=value" split into "--opt" "value" for the options
 // that take a value, so that both spellings work everywhere.
 #pragma once
+#include <exception>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -34,6 +35,20 @@ inline const std::string& set_value(const std::string& v) {
   const auto eq = v.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set " + v + ": not KEY=VALUE (write it as one word, for example --set time.end=1)");
+  return v;
+}
+
+// A non-negative, finite number of seconds given to `option`; InputError naming it otherwise.
+inline double seconds_value(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double v = -1;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !(v >= 0) || !(v < 1e9))
+    throw InputError(option + " " + echo_value(text, 40) + ": not a number of seconds (0 to 1e9)");
   return v;
 }
 

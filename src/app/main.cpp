@@ -1,4 +1,6 @@
 // arksph command line: run, list, help. Exit codes: README.md, "Exit codes".
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -7,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "run/omp_thread_limit.hpp"
 #include "run/omp_wait_policy.hpp"
 #include "run/interrupt.hpp"
 #include "run/simulation.hpp"
@@ -44,30 +47,22 @@ arksph::RunResult run_scene(const arksph::Scene& scene, const arksph::RunOptions
   return arksph::run_simulation(scene, options);
 }
 
+// The overview: every command in one line; each command's own --help gives its options.
 const char* kUsage =
     "arksph - SPH for incompressible viscous flow (WCSPH and ISPH on SUNDIALS ARKODE)\n"
     "\n"
-    "usage:\n"
-    "  arksph run [SCENE.toml] [--out DIR] [--set KEY=VALUE ...] [--overwrite] [--quiet]\n"
-    "      Runs a scene file, or the embedded default scene (lid-driven cavity, Re = 100) without one.\n"
-    "      --set overrides any scene key by its dotted path, e.g. --set time.end=2 --set method.kernel=cubic_spline\n"
-    "      --out DIR writes the output there (same as --set output.directory=DIR); --out=DIR works too\n"
-    "      --overwrite  write into a folder that also holds files other than arksph outputs\n"
-    "      A fresh run removes an earlier run's outputs from the folder (docs/user-guide.md, \"The output folder\").\n"
-    "      --quiet   no progress line on stderr\n"
-    "  arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...]\n"
-    "      Continues the run saved in checkpoint FILE (e.g. --set time.end=10 to go further); the scene is the\n"
-    "      one stored in FILE with the --set overrides. Output continues in its directory (or --out DIR).\n"
-    "  mpirun -n P arksph run SCENE.toml [...]\n"
-    "      WCSPH decomposed over P MPI ranks (builds with MPI; docs/parallel.md, \"Runs over several ranks\")\n"
-    "  arksph batch SWEEP.toml [--jobs N] [--out DIR]   parameter sweep in parallel child runs (batch --help)\n"
-    "  arksph study order STUDY.toml [--out DIR]        observed temporal order of ARKODE tables (study --help)\n"
-    "  arksph study work-precision STUDY.toml           error against wall time, schemes x resolutions\n"
-    "  arksph list                 registered kernels, schemes, viscosity models, ARKODE tables, ...\n"
-    "  arksph default-scene        prints the embedded default scene (a commented template of every key)\n"
-    "  arksph scene-reference      prints the reference of every scene key and registered part (Markdown)\n"
-    "  arksph --help | run --help  this text\n"
-    "  arksph --version            version and git commit\n"
+    "usage: arksph COMMAND [ARGS]   (arksph COMMAND --help: that command's options and files)\n"
+    "  run [SCENE.toml]        runs a scene file, or the embedded default scene (lid-driven cavity, Re = 100)\n"
+    "  run --restart FILE      continues a run from its checkpoint\n"
+    "  batch SWEEP.toml        parameter sweep in parallel child runs\n"
+    "  study order STUDY.toml  observed temporal order of ARKODE tables\n"
+    "  study work-precision STUDY.toml   error against wall time, schemes x resolutions\n"
+    "  list                    registered kernels, schemes, viscosity models, ARKODE tables, ...\n"
+    "  default-scene           prints the embedded default scene (a commented template of every key)\n"
+    "  scene-reference         prints the reference of every scene key and registered part (Markdown)\n"
+    "  --version               version and git commit\n"
+    "  mpirun -n P arksph run SCENE.toml   WCSPH or ISPH decomposed over P MPI ranks (docs/parallel.md;\n"
+    "                          as root add --allow-run-as-root; on P > cores add --oversubscribe)\n"
     "\n"
     "output (in the output directory): particles_NNNNNN.vtp + particles.pvd (ParaView), timeseries.csv,\n"
     "summary.json, checkpoint.h5 (every output.checkpoint_every and at the end).\n"
@@ -75,16 +70,74 @@ const char* kUsage =
     "(output so far stays valid), 4 order study flagged, 5 output could not be written, 6 out of memory,\n"
     "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 131 SIGQUIT; checkpoint.h5 written, continue with --restart).\n";
 
-std::string toml_quote(const std::string& s) {
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') q += '\\';
-    q += c;
+const char* kRunUsage =
+    "usage: arksph run [SCENE.toml] [--out DIR] [--set KEY=VALUE ...] [--overwrite] [--quiet] [--progress-every S]\n"
+    "       arksph run --restart FILE [--out DIR] [--set KEY=VALUE ...] [--quiet] [--progress-every S]\n"
+    "       mpirun -n P arksph run SCENE.toml [...]\n"
+    "\n"
+    "Runs a scene file, or without one the embedded default scene (lid-driven cavity, Re = 100; see\n"
+    "arksph default-scene). Every scene key is listed in docs/scene-reference.md (arksph scene-reference).\n"
+    "\n"
+    "options:\n"
+    "  --set KEY=VALUE   overrides a scene key by its dotted path, one word per --set:\n"
+    "                    --set time.end=2 --set method.kernel=cubic_spline\n"
+    "  --out DIR         output folder (same as --set output.directory=DIR); --out=DIR works too\n"
+    "  --overwrite       write into a folder that also holds files other than arksph outputs\n"
+    "  --restart FILE    continues the run saved in checkpoint FILE (the scene is the one stored in FILE\n"
+    "                    with the --set overrides, e.g. --set time.end=10); output continues in its folder\n"
+    "  --quiet, -q       no progress line on stderr\n"
+    "  --progress-every S  when stderr is not a terminal (a log), a progress line at least every S wall\n"
+    "                    seconds besides the one per output frame (default 30; 0: after every step)\n"
+    "  --help, -h        this text\n"
+    "\n"
+    "A fresh run replaces an earlier run's outputs in its folder (docs/user-guide.md, \"The output folder\").\n"
+    "Under an MPI launcher with P > 1 processes the run is decomposed over the ranks (WCSPH and ISPH;\n"
+    "docs/parallel.md lists what is refused there). Open MPI needs --allow-run-as-root as root and\n"
+    "--oversubscribe for more ranks than cores.\n"
+    "\n"
+    "files written in the output folder: particles_NNNNNN.vtp + particles.pvd (ParaView), timeseries.csv,\n"
+    "summary.json, checkpoint.h5 (every output.checkpoint_every and at the end), .arksph.lock while running.\n"
+    "Exit codes: 0 finished, 1 internal error (a bug), 2 bad input, 3 numerical failure (output so far\n"
+    "stays valid), 5 output could not be written, 6 out of memory, 128+N stopped by signal N (checkpoint\n"
+    "written; continue with --restart).\n";
+
+const char* kListUsage =
+    "usage: arksph list\n"
+    "Prints every family of registered parts (kernels, schemes, viscosity models, ARKODE tables, ...) with\n"
+    "the scene key that chooses it and a one-line summary of each part. docs/scene-reference.md has more.\n";
+
+const char* kDefaultSceneUsage =
+    "usage: arksph default-scene [> FILE.toml]\n"
+    "Prints the embedded default scene, the lid-driven cavity at Re = 100 that arksph run runs without a\n"
+    "scene file, as commented TOML: every key with its default, range and unit. A template for new scenes.\n";
+
+const char* kSceneReferenceUsage =
+    "usage: arksph scene-reference [> FILE.md]\n"
+    "Prints the reference of every scene key (type, default, range, unit, description) and of every\n"
+    "registered part, in Markdown (docs/scene-reference.md is this text).\n";
+
+// Commands without options: --help prints `usage` (exit 0); any other argument is bad input.
+bool wants_help(int argc, char** argv, const char* command, const char* usage) {
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::fputs(usage, stdout);
+      return true;
+    }
+    throw arksph::InputError(arksph::echo_value(a) + ": unknown argument (see arksph " + command + " --help)");
   }
-  return q + "\"";
+  return false;
 }
 
-int cmd_list() {
+// Text printed to stdout in full, or OutputError (exit 5) when it could not be (a full disk, a closed pipe).
+int print_text(const char* text, const char* what) {
+  if (std::fputs(text, stdout) < 0 || std::fflush(stdout) != 0 || std::ferror(stdout))
+    throw arksph::OutputError(std::string(what) + ": standard output could not be written (" + std::strerror(errno) + ")");
+  return 0;
+}
+
+int cmd_list(int argc, char** argv) {
+  if (wants_help(argc, argv, "list", kListUsage)) return 0;
   for (const arksph::FamilyInfo& f : arksph::scene_families()) {
     std::printf("%s (%s):\n", f.family.c_str(), f.key.c_str());
     for (const auto& e : f.entries) std::printf("  %-32s %s\n", e.name.c_str(), e.summary.c_str());
@@ -96,20 +149,24 @@ int cmd_run(int argc, char** argv) {
   std::string scene_path, restart_path;
   std::vector<std::string> sets;
   arksph::RunOptions options;
-  const std::vector<std::string> args = arksph::split_option_values(argc, argv, {"--set", "--out", "--restart"});
+  const std::vector<std::string> args = arksph::split_option_values(argc, argv, {"--set", "--out", "--restart", "--progress-every"});
   const int count = static_cast<int>(args.size());
   for (int i = 0; i < count; ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
+      std::fputs(kRunUsage, stdout);
       return 0;
     } else if (a == "--set" || a == "--out") {
       if (i + 1 >= count) throw arksph::InputError(a + ": missing value");
       const std::string& v = args[++i];
-      sets.push_back(a == "--set" ? arksph::set_value(v) : "output.directory=" + toml_quote(v));
+      sets.push_back(a == "--set" ? arksph::set_value(v) : "output.directory=" + arksph::toml_string(v));
     } else if (a == "--restart") {
       if (i + 1 >= count) throw arksph::InputError(a + ": missing checkpoint file");
+      if (!restart_path.empty()) throw arksph::InputError("--restart given twice (" + restart_path + ", " + args[i + 1] + ")");
       restart_path = args[++i];
+    } else if (a == "--progress-every") {
+      if (i + 1 >= count) throw arksph::InputError(a + ": missing number of seconds");
+      options.progress_every = arksph::seconds_value(a, args[++i]);
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
     } else if (a == "--overwrite") {
@@ -128,6 +185,7 @@ int cmd_run(int argc, char** argv) {
   arksph::Checkpoint checkpoint;  // --restart: the scene is the one stored in the checkpoint
   if (!restart_path.empty()) {
     checkpoint = arksph::read_checkpoint(restart_path);
+    arksph::check_restart_values(checkpoint, restart_path);
     options.restart = &checkpoint;
     options.restart_path = restart_path;
     std::printf("arksph: restart from %s at t = %.17g (step %ld)\n", restart_path.c_str(), checkpoint.time,
@@ -162,6 +220,10 @@ int cmd_run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   arksph::prefer_passive_omp_waiting(argv);  // see run/omp_wait_policy.hpp
+  // A write beyond the file-size limit (ulimit -f) fails with EFBIG like a write to a full disk, and
+  // is reported as one (exit 5, output so far kept) instead of killing the run without a word.
+  std::signal(SIGXFSZ, SIG_IGN);
+  arksph::bound_omp_threads();  // before the first parallel region (run/omp_thread_limit.hpp)
   try {
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
       std::fputs(kUsage, stdout);
@@ -181,16 +243,16 @@ int main(int argc, char** argv) {
     }
 #endif
     if (cmd == "run") return cmd_run(argc - 2, argv + 2);
-    if (cmd == "list") return cmd_list();
+    if (cmd == "list") return cmd_list(argc - 2, argv + 2);
     if (cmd == "batch") return arksph::cmd_batch(argc - 2, argv + 2);
     if (cmd == "study") return arksph::cmd_study(argc - 2, argv + 2);
     if (cmd == "default-scene") {
-      std::fputs(arksph::default_scene_toml(), stdout);
-      return 0;
+      if (wants_help(argc - 2, argv + 2, "default-scene", kDefaultSceneUsage)) return 0;
+      return print_text(arksph::default_scene_toml(), "default-scene");
     }
     if (cmd == "scene-reference") {
-      std::fputs(arksph::scene_reference_markdown().c_str(), stdout);
-      return 0;
+      if (wants_help(argc - 2, argv + 2, "scene-reference", kSceneReferenceUsage)) return 0;
+      return print_text(arksph::scene_reference_markdown().c_str(), "scene-reference");
     }
     std::fprintf(stderr, "arksph: %s: unknown command (try arksph --help)\n", arksph::echo_value(cmd).c_str());
     return 2;

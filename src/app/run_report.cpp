@@ -34,11 +34,18 @@ void print_next_steps(const std::string& dir) {
   if (!metrics) return;
   static const std::pair<const char*, const char*> headline[] = {
       {"ghia_u_linf", "Ghia u L_inf"},
+      {"ghia_u_rms", "Ghia u rms"},
       {"ghia_v_linf", "Ghia v L_inf"},
+      {"ghia_v_rms", "Ghia v rms"},
       {"poiseuille_eps_max_tstar_0.5_2", "Poiseuille eps max (t* in [0.5, 2])"},
       {"poiseuille_rms", "Poiseuille eps"},
+      {"velocity_l1_relative", "velocity L1 relative error"},
+      {"peak_speed_error", "peak speed error"},
+      {"amplitude_error", "amplitude error"},
       {"bubble_y", "bubble tip y"},
       {"spike_y", "spike tip y"},
+      {"upper_density_mean", "upper density mean"},
+      {"upper_density_rms", "upper density rms"},
       {"cv", "CV"},
   };
   std::string line;

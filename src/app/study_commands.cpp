@@ -9,6 +9,7 @@
 
 #include "app/cli_args.hpp"
 #include "core/errors.hpp"
+#include "run/interrupt.hpp"
 #include "study/batch.hpp"
 #include "study/order_study.hpp"
 #include "study/work_precision.hpp"
@@ -102,14 +103,25 @@ int cmd_batch(int argc, char** argv) {
   }
   if (sweep_path.empty()) throw InputError("batch: missing the sweep file (see arksph batch --help)");
   Sweep sweep = read_sweep_file(sweep_path);
-  for (const std::string& set : extra_sets)  // an override of a varied key would silently replace it
-    if (const std::string key = varied_key_overridden(sweep, set); !key.empty())
+  for (const std::string& set : extra_sets) {  // an override of a varied key would silently replace it
+    const std::string key = varied_key_overridden(sweep, set);
+    if (key.rfind("output.directory", 0) == 0)
+      throw InputError("--set " + echo_value(set) + ": the batch gives every run its own folder inside its output "
+                       "folder; choose that folder with --out DIR");
+    if (!key.empty())
       throw InputError("--set " + echo_value(set) + ": " + echo_value(key) + " is varied by " + echo_value(sweep_path) +
                        "; remove it from the sweep's [[vary]] or from --set");
+  }
   for (auto& run : sweep.runs) run.sets.insert(run.sets.end(), extra_sets.begin(), extra_sets.end());
   sweep.common_sets.insert(sweep.common_sets.end(), extra_sets.begin(), extra_sets.end());
   opt.launcher_ranks = true;  // under mpirun -n K: K processes share the runs (study/batch_ranks.hpp)
   const BatchResult res = run_batch(sweep, opt);
+  if (res.signal) {  // the runs it stopped keep their checkpoints; the same command resumes them
+    if (!res.partial)
+      std::fprintf(stderr, "arksph: batch interrupted by %s; the stopped runs wrote their checkpoints (continue: "
+                           "run the same batch command again)\n", interrupt_name(res.signal));
+    return 128 + res.signal;
+  }
   return res.failed > 0 && !res.partial ? 3 : 0;  // rank 0 reports for all (a nonzero rank > 0 would end the launch)
 }
 

@@ -185,7 +185,7 @@ class DecomposedRun final : public RunStrategy {
   std::string checkpoint_now(double t, int frame) override { return write_checkpoint(t, whole_state(false), frame); }
   std::string checkpoint_path() const override { return checkpoints_->path(); }
   // ARKODE gave up: on every rank alike (global norms, agreed flags).
-  Verdict numerical_failure(const std::string& what) override {
+  Verdict numerical_failure(double, const std::string& what) override {
     return agree(comm_, {3, what, integrator_->failure_names_entry()});
   }
   Verdict out_of_memory(double) override { throw; }
@@ -653,7 +653,7 @@ void DecomposedRun::finish(RunResult& result, double wall, double stepping) {
 RunResult run_distributed(const Scene& scene, const RunOptions& options, const parallel::Communicator& comm) {
   const auto wall_start = Clock::now();
   DecomposedRun run(scene, options, comm);
-  return run_loop(scene, run, options.quiet || comm.rank() != 0, wall_start);
+  return run_loop(scene, run, options.quiet || comm.rank() != 0, options.progress_every, wall_start);
 }
 
 }  // namespace arksph::distributed

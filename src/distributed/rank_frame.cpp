@@ -26,6 +26,7 @@ RankFrame::RankFrame(double t, const HaloRhs& f, const RankParticles& mine, cons
   const auto& phase_field = mine.fields().field[static_cast<std::size_t>(mine.index().phase())];
   phase_.assign(phase_field.begin(), phase_field.end());
   frame_.dimension = dim;
+  frame_.smoothing_length = f.evaluator().kernel().h();
   frame_.n = n;
   frame_.time = t;
   frame_.x = x_.data();

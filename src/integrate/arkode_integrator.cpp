@@ -123,13 +123,13 @@ void ArkodeIntegrator::evolve(double tout, int itask) {
     std::snprintf(at, sizeof at, "t = %.9g, ", non_finite_.t);
     throw NumericalFailure(at + (describe_entry_ ? describe_entry_(non_finite_.index, non_finite_.value)
                                                  : "right-hand side entry " + std::to_string(non_finite_.index) +
-                                                       " = " + std::to_string(non_finite_.value)));
+                                                       " = " + arksph::message_number(non_finite_.value)));
   }
   if (flag < 0) {
     char* name = module_.return_flag_name(flag);
     const std::string flag_name = name ? name : "unknown";
     std::free(name);
-    throw NumericalFailure(std::string("ARKODE: ") + module_.name + "Evolve failed at t = " + std::to_string(t_) +
+    throw NumericalFailure(std::string("ARKODE: ") + module_.name + "Evolve failed at t = " + arksph::message_number(t_) +
                            " with flag " + std::to_string(flag) + " (" + flag_name + "; " + last_message_ + ")");
   }
 }

@@ -1,6 +1,8 @@
 // Registries of the ARKODE tables and IMEX pairs, and the [time] keys read by the integrators.
 #include "integrate/time_params.hpp"
 
+#include <algorithm>
+
 #include "core/param_builder.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "integrate/imex_integrator.hpp"
@@ -40,8 +42,11 @@ const std::vector<Param>& time_params() {
       number("time.cfl", 0.25).in(between(0, 1, true, false))
           .doc("coefficient of the stability limits (Szewc et al. 2012 eqs. 34-35)").to(&Scene::cfl),
       number("time.rtol", 1e-2).in(above(0))
-          .doc("relative tolerance (adaptive mode; loose, so that the stability limits govern)").to(&Scene::rtol),
-      number("time.atol", 1e-4).in(above(0)).doc("absolute tolerance (adaptive mode)").to(&Scene::atol),
+          .doc("relative tolerance (adaptive mode; loose, so that the stability limits govern; with a fixed time.dt "
+               "the implicit solves of IMEX use min(time.rtol, 1e-10))").to(&Scene::rtol),
+      number("time.atol", 1e-4).in(above(0))
+          .doc("absolute tolerance (adaptive mode; with a fixed time.dt the implicit solves use min(time.atol, 1e-12))")
+          .to(&Scene::atol),
       integer("time.max_steps", 100000000).in(at_least(1)).doc("abort after this many steps").to(&Scene::max_steps),
       // Read by the state check after every step (run/state_check.cpp).
       number("time.blowup_speed", 0.0).in(at_least(0)).unit("m/s")
@@ -64,6 +69,11 @@ const std::vector<Param>& imex_params() {
           .to(&Scene::imex_linear),
   };
   return params;
+}
+
+Tolerances integrator_tolerances(const Scene& scene, double dt) {
+  if (dt <= 0) return {scene.rtol, scene.atol};
+  return {std::min(scene.rtol, kFixedStepRtol), std::min(scene.atol, kFixedStepAtol)};
 }
 
 }  // namespace arksph

@@ -241,6 +241,27 @@ void sync_directory(const std::string& dir) {
 
 bool has_attr(hid_t obj, const char* name) { return H5Aexists(obj, name) > 0; }
 
+// The stored type must be one arksph writes for values read as `mem_type`: little-endian IEEE
+// doubles; little-endian 64-bit integers for the ids, 32-bit for the phases, either for integer
+// attributes (flags and counts are written in 32 or 64 bits). HDF5 would convert any numeric type on
+// reading, so a flipped bit in a datatype message (outside the checksums' reach) could otherwise
+// rescale every value silently.
+void expect_stored_type(hid_t stored, hid_t mem_type, const std::string& label, bool attribute) {
+  bool ok = false;
+  const char* expected = "";
+  if (H5Tequal(mem_type, H5T_NATIVE_DOUBLE) > 0) {
+    ok = H5Tequal(stored, H5T_IEEE_F64LE) > 0;
+    expected = "a little-endian 64-bit float";
+  } else if (H5Tequal(mem_type, H5T_NATIVE_INT64) > 0) {
+    ok = H5Tequal(stored, H5T_STD_I64LE) > 0 || (attribute && H5Tequal(stored, H5T_STD_I32LE) > 0);
+    expected = attribute ? "a little-endian 32- or 64-bit integer" : "a little-endian 64-bit integer";
+  } else {
+    ok = H5Tequal(stored, H5T_STD_I32LE) > 0;
+    expected = "a little-endian 32-bit integer";
+  }
+  if (!ok) throw std::runtime_error(label + " is not stored as " + expected + " as arksph writes it (damaged datatype)");
+}
+
 template <class T>
 T read_scalar(hid_t obj, const char* name, hid_t mem_type) {
   if (!has_attr(obj, name)) throw std::runtime_error(std::string("attribute '") + name + "' missing");
@@ -248,6 +269,8 @@ T read_scalar(hid_t obj, const char* name, hid_t mem_type) {
   Hid space(H5Aget_space(attr), H5Sclose, std::string("attribute ") + name);
   if (H5Sget_simple_extent_npoints(space) != 1)
     throw std::runtime_error(std::string("attribute '") + name + "' is not a scalar");
+  Hid stored(H5Aget_type(attr), H5Tclose, std::string("attribute ") + name);
+  expect_stored_type(stored, mem_type, std::string("attribute '") + name + "'", true);
   T v{};
   check(H5Aread(attr, mem_type, &v), std::string("attribute ") + name);
   return v;
@@ -297,6 +320,8 @@ void read_array(hid_t group, const std::string& where, const char* name, hid_t m
   if (dims[0] != n)
     throw std::runtime_error("dataset " + label + " has " + std::to_string(dims[0]) + " values, expected " +
                              std::to_string(n));
+  Hid stored(H5Dget_type(dset), H5Tclose, "dataset " + label);
+  expect_stored_type(stored, mem_type, "dataset " + label, false);
   if (n > 0) check(H5Dread(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "dataset " + label);
 }
 

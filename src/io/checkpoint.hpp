@@ -65,4 +65,11 @@ void write_checkpoint(const std::string& path, const Checkpoint& c);
 // is missing, not HDF5, truncated, of another format version or inconsistent.
 Checkpoint read_checkpoint(const std::string& path);
 
+// The values a run continues from, checked like scene values before they are used: times and steps
+// finite and non-negative, counters at most 2^53, the frame and checkpoint numbers within the
+// frames a scene may schedule (io/scene_limits.hpp), ids a permutation of 0..n-1, masses and
+// densities positive and finite. InputError("<path>: <attribute> = value: reason") otherwise: a file
+// edited by hand or damaged outside the reach of its checksums is refused (exit 2), not looped over.
+void check_restart_values(const Checkpoint& c, const std::string& path);
+
 }  // namespace arksph

@@ -19,6 +19,8 @@ struct Frame {
   const double* mass = nullptr;
   const std::int64_t* id = nullptr;
   const std::int32_t* phase = nullptr;
+  double smoothing_length = 0;           // h, the same for every particle of a run
+  const std::int32_t* kind = nullptr;    // ParticleKind (io/output_fields.hpp); null: every particle is fluid
 };
 
 }  // namespace arksph

@@ -25,6 +25,11 @@ FrameInIdOrder::FrameInIdOrder(const Frame& f) : view_(f) {
   id_.resize(f.n);
   for (std::size_t k = 0; k < f.n; ++k) id_[k] = f.id[order[k]];
   view_.id = id_.data();
+  if (f.kind) {
+    kind_.resize(f.n);
+    for (std::size_t k = 0; k < f.n; ++k) kind_[k] = f.kind[order[k]];
+    view_.kind = kind_.data();
+  }
   if (f.phase) {
     phase_.resize(f.n);
     for (std::size_t k = 0; k < f.n; ++k) phase_[k] = f.phase[order[k]];

@@ -20,7 +20,7 @@ class FrameInIdOrder {
   Frame view_;
   std::vector<std::vector<double>> doubles_;
   std::vector<std::int64_t> id_;
-  std::vector<std::int32_t> phase_;
+  std::vector<std::int32_t> phase_, kind_;
 };
 
 }  // namespace arksph

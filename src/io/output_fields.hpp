@@ -2,12 +2,16 @@
 // documentation (`output_fields_markdown()`), so a field is described exactly once.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <string>
 
 namespace arksph {
 
 // Which field an entry describes; writers switch on it (-Wswitch flags a field left unhandled).
-enum class FieldId { velocity, pressure, density, summation_density, mass, id, phase };
+enum class FieldId { velocity, pressure, density, summation_density, mass, id, phase, smoothing_length, kind };
+
+// Values of the `kind` field.
+enum class ParticleKind : std::int32_t { fluid = 0, wall = 1 };
 
 // Storage type of the written array (VTK XML type names).
 enum class FieldType { Float64, Int64, Int32 };
@@ -22,7 +26,7 @@ struct OutputField {
 };
 
 // Point-data arrays written into every VTP frame (listed in docs/user-guide.md, "Output files").
-inline constexpr std::array<OutputField, 7> kOutputFields{{
+inline constexpr std::array<OutputField, 9> kOutputFields{{
     {FieldId::velocity, "velocity", 3, FieldType::Float64, "m/s", "particle velocity (u, v, 0); 1D: (u, 0, 0)"},
     {FieldId::pressure, "pressure", 1, FieldType::Float64, "Pa", "pressure"},
     {FieldId::density, "density", 1, FieldType::Float64, "kg/m^3", "density"},
@@ -32,6 +36,9 @@ inline constexpr std::array<OutputField, 7> kOutputFields{{
      "particle mass (per unit depth in 2D, per unit area in 1D)"},
     {FieldId::id, "id", 1, FieldType::Int64, "-", "particle id, stable across frames"},
     {FieldId::phase, "phase", 1, FieldType::Int32, "-", "phase index of the particle"},
+    {FieldId::smoothing_length, "h", 1, FieldType::Float64, "m",
+     "smoothing length h = method.h_over_dx x dx (the kernel's support is a multiple of it)"},
+    {FieldId::kind, "kind", 1, FieldType::Int32, "-", "particle kind: 0 fluid, 1 wall"},
 }};
 
 // "Float64", "Int64" or "Int32".

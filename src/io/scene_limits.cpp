@@ -27,6 +27,13 @@ void check_scales(const std::map<std::string, Section>& sections, const Scene& s
   if (!normal(s.spacing * s.spacing) || !normal(h * h) || !normal(radius * radius))
     fluid.fail("spacing", format_number(s.spacing) + " is outside the range of lengths whose squares are normal "
                           "doubles" + scales);
+  // A particle's lattice neighbours must lie inside the kernel's support: with radius <= dx every
+  // W(dx) is 0, the particles do not see one another and the shifting's W(r) / W(dx) divides by 0.
+  if (!(radius > s.spacing * (1 + 1e-9)))
+    sections.at("method").fail("h_over_dx", format_number(s.h_over_dx) + " puts the kernel radius (" +
+                                                format_number(radius / s.spacing) + " dx for kernel \"" + s.kernel +
+                                                "\") at or inside the particle spacing: no particle would have a "
+                                                "neighbour; raise method.h_over_dx");
   // The kernel's value and gradient constants scale as 1 / h^d and 1 / h^(d+2).
   const double hd2 = std::pow(h, d + 2);
   if (!normal(hd2) || !normal(1.0 / hd2) || !normal(std::pow(h, d)) || !normal(1.0 / std::pow(h, d)))

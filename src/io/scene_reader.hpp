@@ -36,6 +36,10 @@ const char* default_scene_toml();
 // it back gives the same Scene. This is what Scene::resolved_toml holds.
 std::string scene_to_toml(const Scene& scene);
 
+// `text` as a TOML basic string, quotes and escapes included (control characters as \n, \uXXXX):
+// how a command-line value such as --out DIR becomes a --set.
+std::string toml_string(const std::string& text);
+
 // The same with each key's description, admissible values and unit as a comment.
 std::string scene_to_commented_toml(const Scene& scene);
 

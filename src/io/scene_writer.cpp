@@ -135,6 +135,8 @@ std::string write(const Scene& s, bool comments) {
 
 }  // namespace
 
+std::string toml_string(const std::string& text) { return quote(text); }
+
 std::string scene_to_toml(const Scene& s) { return write(s, false); }
 
 std::string scene_to_commented_toml(const Scene& s) { return write(s, true); }

@@ -88,6 +88,16 @@ vtkSmartPointer<vtkDataArray> field_array(const OutputField& fd, const Frame& f)
       for (vtkIdType i = 0; i < n; ++i) a->SetValue(i, ph[i]);
       return a;
     }
+    case FieldId::smoothing_length: {
+      auto a = make_array<vtkDoubleArray>(fd.name, 1, n);
+      for (vtkIdType i = 0; i < n; ++i) a->SetValue(i, f.smoothing_length);
+      return a;
+    }
+    case FieldId::kind: {
+      auto a = make_array<vtkTypeInt32Array>(fd.name, 1, n);
+      for (vtkIdType i = 0; i < n; ++i) a->SetValue(i, f.kind ? f.kind[i] : static_cast<std::int32_t>(ParticleKind::fluid));
+      return a;
+    }
   }
   throw std::logic_error("write_vtp: unhandled output field");
 }

@@ -40,7 +40,7 @@ bool is_batch_file(const std::string& name) { return name == "run.log" || name =
 bool is_run_file(const std::string& name) {
   static const char* const fixed[] = {"particles.pvd",       "timeseries.csv",          "summary.json",
                                       "nn_histogram.csv",    "ghia_u.csv",              "ghia_v.csv",
-                                      "poiseuille_profile.csv", "profile_1d.csv",       "timeseries_before_restart.csv",
+                                      "poiseuille_profile.csv", "profile_1d.csv",       "timeseries_before_restart.csv", "checkpoint.h5",
                                       kLockName};
   for (const char* f : fixed)
     if (name == f) return true;
@@ -56,7 +56,7 @@ bool is_run_file(const std::string& name) {
         all_digits(mid.substr(r + 2)))
       return true;
   }
-  return starts_with(name, "checkpoint") && ends_with(name, ".h5");
+  return false;
 }
 
 std::string slurp(const fs::path& p) {
@@ -64,6 +64,12 @@ std::string slurp(const fs::path& p) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+std::string linked_output_message(const std::string& source, const std::string& dir, const std::string& name) {
+  return source + ": output.directory: " + dir + "/" + echo_value(name, 60) +
+         " is a symbolic link; arksph writes its files only inside the folder and never through a link "
+         "(remove the link or choose another --out)";
 }
 
 }  // namespace
@@ -95,7 +101,8 @@ OutputFolder::OutputFolder(const std::string& dir, const std::string& source) : 
     throw OutputError("cannot write " + dir + ": cannot create the folder (output.directory of " + source +
                       "): " + (ec ? ec.message() : "not a directory"));
   const std::string lock = (fs::path(dir) / kLockName).string();
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (lock_fd_ < 0 && errno == ELOOP) throw InputError(linked_output_message(source, dir, kLockName));
   if (lock_fd_ < 0) throw OutputError("cannot write " + lock + ": " + std::strerror(errno));
   if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
     const int err = errno;
@@ -114,6 +121,10 @@ OutputFolder::OutputFolder(const std::string& dir, const std::string& source) : 
     ::close(lock_fd_);
     lock_fd_ = -1;
     throw OutputError("cannot write " + lock + ": " + std::strerror(err));
+  }
+  for (const auto& e : fs::directory_iterator(dir_)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_symlink() && is_run_output(name)) throw InputError(linked_output_message(source, dir, name));
   }
 }
 
@@ -137,14 +148,20 @@ void OutputFolder::refuse_foreign_files() const {
                    "); choose an empty or new folder, or give --overwrite to write beside them");
 }
 
-void OutputFolder::remove_run_outputs() const {
+OutputFolder::Removed OutputFolder::remove_run_outputs() const {
+  Removed removed;
   for (const auto& e : fs::directory_iterator(dir_)) {
     const std::string name = e.path().filename().string();
     if (!e.is_regular_file() || !is_run_output(name) || is_batch_file(name) || name == kLockName) continue;
     std::error_code ec;
     fs::remove(e.path(), ec);
     if (ec) throw OutputError("cannot write " + e.path().string() + ": cannot remove the earlier run's file: " + ec.message());
+    ++removed.files;
+    if (name.find(".tmp") == std::string::npos && starts_with(name, "particles_") &&
+        (ends_with(name, ".pvtp") || (ends_with(name, ".vtp") && name.find("_r") == std::string::npos)))
+      ++removed.frames;
   }
+  return removed;
 }
 
 std::string OutputFolder::run_id(bool* unidentified) const {

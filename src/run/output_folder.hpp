@@ -1,5 +1,9 @@
 // The output folder of one run (output.directory), and what a run may find in it.
 //
+// No links. Every file a run writes there is opened or renamed inside the folder; a run output name
+// (or the lock) that is a symbolic link makes the folder refused (InputError, exit 2), so that no
+// write follows a link out of the folder.
+//
 // Exclusive use. A run holds an advisory lock (flock) on DIR/.arksph.lock from start to exit, so
 // two runs never write into the same folder: the second is refused (InputError, exit 2) with the
 // pid of the holder. The lock is released by the kernel when the process ends, also on a crash.
@@ -37,8 +41,12 @@ class OutputFolder {
   // Refuses (InputError) a folder holding files that are not run outputs, naming a few of them.
   void refuse_foreign_files() const;
   // Removes the run outputs of an earlier run (run.log and batch_run.txt stay: the batch runner
-  // wrote them for this run). OutputError if one cannot be removed.
-  void remove_run_outputs() const;
+  // wrote them for this run) and returns how many files and frames (particles_N.vtp/.pvtp) went.
+  // OutputError if one cannot be removed.
+  struct Removed {
+    long files = 0, frames = 0;
+  };
+  Removed remove_run_outputs() const;
   // The run id the folder's outputs carry (summary.json, else particles.pvd); "" if none is found.
   // `unidentified` (optional) is set when "" comes from a readable summary.json or collection that
   // carries no id (the output of a run that wrote none).

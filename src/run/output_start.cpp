@@ -1,5 +1,7 @@
 #include "run/output_start.hpp"
 
+#include <cstdio>
+
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
 
@@ -7,7 +9,10 @@ namespace arksph {
 
 std::string start_output_folder(const OutputFolder& folder, const Scene& scene, const RunOptions& options) {
   if (!options.restart) {
-    folder.remove_run_outputs();
+    const OutputFolder::Removed removed = folder.remove_run_outputs();
+    if (removed.files > 0)
+      std::printf("arksph: replacing the earlier run in %s: %ld frames, %ld files removed\n", scene.directory.c_str(),
+                  removed.frames, removed.files);
     return new_run_id();
   }
   const std::string& mine = options.restart->run_id;

@@ -31,10 +31,10 @@ Verdict step_size_verdict(const Scene& scene, double t, double dt, int& tiny_ste
 // The step budget and the signals, after this process's own checks.
 Verdict budget_and_signals(const Scene& scene, double t, long steps, Verdict v) {
   if (!v.code && steps >= scene.max_steps)
-    v = {3, "time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " + std::to_string(t) +
+    v = {3, "time.max_steps = " + std::to_string(scene.max_steps) + " reached at t = " + arksph::message_number(t) +
                 " before time.end"};
   if (const int sig = pending_interrupt(); sig && !v.code)
-    v = {128 + sig, std::string("interrupted by ") + interrupt_name(sig) + " at t = " + std::to_string(t)};
+    v = {128 + sig, std::string("interrupted by ") + interrupt_name(sig) + " at t = " + arksph::message_number(t)};
   return v;
 }
 
@@ -45,8 +45,9 @@ double next_output_time(const Scene& scene, int frame) {
   return t_next > scene.end * (1 - 1e-12) ? scene.end : t_next;
 }
 
-RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, Clock::time_point wall_start) {
-  Progress progress(scene.end, quiet);
+RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, double progress_every,
+                   Clock::time_point wall_start) {
+  Progress progress(scene.end, quiet, progress_every);
   double t = run.start_time();
   int frame = run.first_frame();
   int tiny_steps = 0;  // adaptive steps in a row below the underflow floor (check_step_size)
@@ -98,7 +99,7 @@ RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, Clock::time
       result.checkpoint = run.checkpoint_at_end(t, frame);
     }
   } catch (const NumericalFailure& e) {  // ARKODE gave up
-    stop(run.numerical_failure(e.what()));
+    stop(run.numerical_failure(t, e.what()));
   } catch (const OutputError& e) {  // disk full, size limit: keep what still fits, exit 5
     result.exit_code = 5;
     result.message = e.what();
@@ -113,6 +114,7 @@ RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, Clock::time
   } catch (const std::bad_alloc&) {
     stop(run.out_of_memory(t));
   }
+  result.final_time = t;
   progress.finish();
   run.finish(result, seconds_since(wall_start), stepping);
   return result;

@@ -68,8 +68,9 @@ class RunStrategy {
   virtual std::string checkpoint_now(double t, int frame) = 0;
   virtual std::string checkpoint_path() const = 0;
 
-  // The verdict after ARKODE gave up (the same on every rank).
-  virtual Verdict numerical_failure(const std::string& what) = 0;
+  // The verdict after ARKODE gave up at or after t, the time of the last accepted step (the same on
+  // every rank).
+  virtual Verdict numerical_failure(double t, const std::string& what) = 0;
   // An allocation failed at t: the verdict, or rethrows (called from the handler).
   virtual Verdict out_of_memory(double t) = 0;
 
@@ -79,8 +80,9 @@ class RunStrategy {
 };
 
 // Runs the loop above from strategy.start_time() to scene.end. `wall_start`: when the run's set-up began (summary.json's wall time); `quiet`: no
-// progress on stderr.
-RunResult run_loop(const Scene& scene, RunStrategy& strategy, bool quiet,
+// progress on stderr; `progress_every`: wall seconds between progress lines when stderr is not a
+// terminal (run/progress.hpp).
+RunResult run_loop(const Scene& scene, RunStrategy& strategy, bool quiet, double progress_every,
                    std::chrono::steady_clock::time_point wall_start);
 
 // The end of the output interval that starts at frame `frame`: frame * output.every, or time.end.

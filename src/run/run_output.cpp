@@ -84,6 +84,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   fr.mass = f.m.data();
   fr.id = model_.particles.id.data();
   fr.phase = model_.particles.phase.data();
+  fr.smoothing_length = model_.h;
   record(diag, stats, &fr);
 }
 
@@ -171,7 +172,10 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
   } else if (pvd_ && whole) {
     char name[64];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
-    write_vtp(scene_.directory + "/" + name, FrameInIdOrder(*whole).frame());  // rows by id (io/frame_order.hpp)
+    const FrameInIdOrder ordered(*whole);  // rows by id (io/frame_order.hpp)
+    Frame rows = ordered.frame();
+    rows.smoothing_length = model_.h;
+    write_vtp(scene_.directory + "/" + name, rows);
     pvd_->add(t, name);
   }
   ++frames_;
@@ -188,7 +192,7 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, double w
   Json j = Json::object();
   j.set("scene", scene_.name).set("scheme", scene_.scheme).set("run_id", run_id_);
   j.set("particles", model_.particles.n).set("dimension", scene_.dimension);
-  j.set("final_time", last_t_).set("steps", stats.steps).set("rhs_evals", stats.rhs_evals);
+  j.set("final_time", result.final_time >= 0 ? result.final_time : last_t_).set("steps", stats.steps).set("rhs_evals", stats.rhs_evals);
   j.set("diagnostic_evals", diag_evals).set("step_attempts", stats.attempts);
   j.set("error_test_failures", stats.error_test_fails);
   j.set("wall_reflections", wall_reflections).set("neighbor_rebuilds", neighbor_rebuilds);

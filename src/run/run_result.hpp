@@ -8,6 +8,7 @@ struct Checkpoint;  // io/checkpoint.hpp
 
 struct RunOptions {
   bool quiet = false;        // no progress output
+  double progress_every = 30;  // stderr not a terminal: wall seconds between progress lines (0: every step)
   bool write_frames = true;  // VTP frames and PVD
   const Checkpoint* restart = nullptr;  // arksph run --restart: continue from this checkpoint
   std::string restart_path;             // its file (for messages)
@@ -21,6 +22,7 @@ struct RunResult {
   std::string checkpoint;    // the last checkpoint written ("" if none)
   double steady_time = -1;   // time.steady_tolerance: the output time at which the run stopped at steady state
   double steady_rate = 0;    // the steady-state change rate there (diagnostics/steady_state.hpp)
+  double final_time = -1;    // the simulated time reached (the last completed step); -1 before the loop ran
 };
 
 }  // namespace arksph

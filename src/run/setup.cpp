@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "boundary/wall_velocity_rules.hpp"
@@ -9,6 +10,7 @@
 #include "core/expression.hpp"
 #include "core/particle_order.hpp"
 #include "core/scheme.hpp"
+#include "integrate/time_params.hpp"
 #include "projection/local_domain.hpp"
 #include "rhs/density/initial_density.hpp"
 #include "rhs/reference_speed.hpp"
@@ -52,8 +54,8 @@ Model build_model(const Scene& scene) {
   for (int k = 0; k < scene.dimension; ++k) {
     const double length = scene.max[k] - scene.min[k];
     if (kernel.radius() >= length)
-      throw InputError(scene.source + ": method.h_over_dx: kernel support " + std::to_string(kernel.radius()) +
-                       " is not smaller than the box length " + std::to_string(length));
+      throw InputError(scene.source + ": method.h_over_dx: kernel support " + arksph::message_number(kernel.radius()) +
+                       " is not smaller than the box length " + arksph::message_number(length));
   }
   double u0max = 0;
   for (std::size_t a = 0; a < model.particles.n; ++a) {
@@ -98,6 +100,10 @@ Model build_model(const Scene& scene) {
     if (scheme.grid) {
       const GridSpec g = gpps_grid(scene);
       model.terms.push_back("projection:gpps-klu:" + std::to_string(g.nx) + "x" + std::to_string(g.ny));
+    } else if (scene.projection == "orthogonal") {  // the coarse pressure space's dense LDLT (ppe_solver unused)
+      char spacing[32];
+      std::snprintf(spacing, sizeof spacing, "%gdx", scene.orthogonal_spacing);
+      model.terms.push_back(std::string("projection:orthogonal-coarse-ldlt:") + spacing);
     } else if (model.projection->constrained()) {
       model.terms.push_back("projection:constrained-ppe-" + scene.ppe_solver);
     } else {
@@ -140,8 +146,9 @@ ErkOptions integrator_options(const Scene& scene) {
   ErkOptions o;
   o.table = scene.integrator;
   o.fixed_dt = scene.dt;
-  o.rtol = scene.rtol;
-  o.atol = scene.atol;
+  const Tolerances tol = integrator_tolerances(scene, scene.dt);
+  o.rtol = tol.rtol;
+  o.atol = tol.atol;
   o.max_steps = scene.max_steps;
   if (scene.dt == 0 && !scene.imex && !erk_table_has_embedding(scene.integrator))
     throw InputError(scene.source + ": time.dt: table " + scene.integrator +

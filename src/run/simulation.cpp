@@ -11,6 +11,7 @@
 
 #include "run/checkpointing.hpp"  // checkpoints and restart
 #include "run/cpu_time.hpp"
+#include "run/failure_diagnosis.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_folder.hpp"
 #include "run/output_start.hpp"
@@ -24,6 +25,7 @@
 #include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
 #include "diagnostics/flow_metrics.hpp"
+#include "integrate/time_params.hpp"
 
 namespace arksph {
 
@@ -41,15 +43,21 @@ void print_run_header(const Scene& scene, const Model& model) {
   if (model.reference_speed > 0) std::printf("  flow speed U %.6g (scale of the regularisation velocity)\n", model.reference_speed);
   if (model.projection && model.projection->constrained()) {
     const ConstrainedPressure& c = *model.projection->constraint();
-    std::printf("  constrained projection, divergence relaxation rate %.6g", c.relaxation());
+    std::printf("  %s projection, divergence relaxation rate %.6g", scene.projection.c_str(), c.relaxation());
     if (c.density_relaxation())  // the P-W correction as a velocity in dr/dt
       std::printf(", density relaxation rate %.6g", c.density_relaxation()->rate());
     std::printf("\n");
   }
   const std::string method = scene.imex ? "ARKStep IMEX " + scene.imex_pair + " (viscosity implicit)" : scene.integrator;
-  std::printf("  integrator %s, %s, end time %g\n", method.c_str(),
-              scene.dt > 0 ? ("fixed dt " + std::to_string(scene.dt)).c_str() : "adaptive dt (stability limited)",
-              scene.end);
+  std::string stepping = "adaptive dt (stability limited)";
+  if (scene.dt > 0) {
+    const Tolerances tol = integrator_tolerances(scene, scene.dt);
+    char text[160];
+    std::snprintf(text, sizeof text, scene.imex ? "fixed dt %g (implicit stages solved to rtol %g, atol %g)" : "fixed dt %g",
+                  scene.dt, tol.rtol, tol.atol);
+    stepping = text;
+  }
+  std::printf("  integrator %s, %s, end time %g\n", method.c_str(), stepping.c_str(), scene.end);
   if (scene.steady_tolerance > 0) {  // diagnostics/steady_state.hpp
     char window[96] = "the latest output interval";
     if (scene.steady_window > 0 && scene.steady_measure == "window_means")
@@ -98,9 +106,13 @@ class LocalRun final : public RunStrategy {
     return checkpoints_->write(t, integrator(), frame, reflections_);
   }
   std::string checkpoint_path() const override { return checkpoints_->path(); }
-  Verdict numerical_failure(const std::string& what) override { return {3, what}; }
+  // ARKODE gave up: where the flow was most violent at the last accepted state.
+  Verdict numerical_failure(double t, const std::string& what) override {
+    if (!stepper_.integrator) return {3, what};  // before the first step
+    return {3, what + failure_diagnosis(*model_.rhs, model_.particles, t, stepper_.integrator->state())};
+  }
   Verdict out_of_memory(double t) override {
-    return {6, "out of memory at t = " + std::to_string(t) + ": an allocation failed while " + activity()};
+    return {6, "out of memory at t = " + arksph::message_number(t) + ": an allocation failed while " + activity()};
   }
   void finish(RunResult& result, double wall, double stepping) override;
 
@@ -247,7 +259,7 @@ RunResult run_simulation(const Scene& scene, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   poll_setup_interrupt();  // set-up polls for a signal between its phases and in its long loops
   LocalRun run(scene, options);
-  return run_loop(scene, run, options.quiet, wall_start);
+  return run_loop(scene, run, options.quiet, options.progress_every, wall_start);
 }
 
 }  // namespace arksph

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -85,14 +86,19 @@ bool read_summary(BatchRunResult& r) {
 
 // Starts one child with stdout and stderr into DIR/run.log (appended to when `append`: the log of a
 // resumed run keeps what the run wrote before it stopped).
+// The child gets SIGTERM when the batch dies (also by SIGKILL): it writes its checkpoint and stops,
+// instead of running on as an orphan that a resumed batch would race for the same folder.
 pid_t launch(const std::string& exe, const std::vector<std::string>& args, const std::string& dir, bool append) {
   const std::string log = (fs::path(dir) / "run.log").string();
   std::vector<char*> argv;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(128 + SIGTERM);  // the batch died before prctl took effect
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | (append ? O_APPEND : O_TRUNC), 0644);
     if (fd >= 0) {
       dup2(fd, STDOUT_FILENO);
@@ -206,8 +212,20 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
       }
     }
     if (running.empty()) break;  // interrupted before launching the rest
+    // Wait for a child, polling for a signal to the batch: it goes on to every running child (each
+    // writes its checkpoint and stops; the next launch of the batch resumes them).
     int wstatus = 0;
-    const pid_t pid = waitpid(-1, &wstatus, 0);
+    pid_t pid = 0;
+    while ((pid = waitpid(-1, &wstatus, WNOHANG)) == 0) {
+      if (const int sig = pending_interrupt(); sig && !res.signal) {
+        res.signal = sig;
+        if (!opt.quiet)
+          std::fprintf(stderr, "batch%s: %s: passing it to the %zu running runs, which write their checkpoints\n",
+                       rank_tag(ranks).c_str(), interrupt_name(sig), running.size());
+        for (const auto& [child, index] : running) kill(child, sig);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     if (pid < 0) {
       if (errno == EINTR) continue;
       throw std::runtime_error("waitpid failed");

@@ -44,6 +44,7 @@ struct BatchResult {
   int failed = 0, skipped = 0;
   double wall_seconds = 0;
   bool partial = false;  // a rank > 0 of a launch: its own runs only, no combined files written
+  int signal = 0;        // SIGHUP/SIGINT/SIGQUIT/SIGTERM received: forwarded to the running children
 };
 
 // Validates every run's scene in-process first (a bad value throws InputError before anything

@@ -16,6 +16,7 @@
 #include "core/errors.hpp"
 #include "io/names.hpp"
 #include "integrate/erk_integrator.hpp"
+#include "integrate/time_params.hpp"
 #include "io/scene_reader.hpp"
 #include "projection/divergence_operator.hpp"
 #include "study/reference_error.hpp"
@@ -83,8 +84,9 @@ RunEnd run_scene(const Scene& base, const std::string& table, double dt, long* r
   ErkOptions o;
   o.table = scene.imex ? base.integrator : table;
   o.fixed_dt = dt;
-  o.rtol = scene.rtol;  // fixed steps: no error control; IMEX: the Newton tolerance scales with these
-  o.atol = scene.atol;
+  const Tolerances tol = integrator_tolerances(scene, dt);  // fixed steps: the implicit solves' tolerances
+  o.rtol = tol.rtol;
+  o.atol = tol.atol;
   if (model.projection) model.projection->project_initial(0.0, y0.data());
   TimeStepper stepper = make_time_stepper(scene, *model.rhs, o, y0, 0.0, model.projection.get());
   TimeIntegrator& integ = *stepper.integrator;
@@ -220,6 +222,11 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     const std::vector<double> ones(layout.n, 1.0);
     return errors_against_analytic(velocities_of(layout, y.data(), ones, ones), *exact, scene.end).linf;
   };
+  {  // every run has a fixed step: say how far its implicit stages are solved (integrate/time_params.hpp)
+    const Tolerances tol = integrator_tolerances(scene, dt_min_all);
+    std::printf("order study: fixed steps; IMEX stages solved to rtol %g, atol %g (min of time.rtol/atol and %g/%g)\n",
+                tol.rtol, tol.atol, kFixedStepRtol, kFixedStepAtol);
+  }
   RunEnd shared_ref;
   if (!study.reference_table.empty() && !analytic) {
     shared_ref = run_scene(scene, study.reference_table, dt_min_all / study.reference_dt_divisor, nullptr);

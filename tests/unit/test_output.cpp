@@ -50,7 +50,8 @@ struct Particles {
   std::size_t n;
   std::vector<double> x, y, u, v, p, rho, rho_sum, m;
   std::vector<std::int64_t> id;
-  std::vector<std::int32_t> phase;
+  std::vector<std::int32_t> phase, kind;
+  double h = 0.0123456789;
   explicit Particles(std::size_t n_) : n(n_) {
     for (std::size_t i = 0; i < n; ++i) {
       const double k = static_cast<double>(i);
@@ -64,6 +65,7 @@ struct Particles {
       m.push_back(1e-3 * (k + 0.5) / 3.0);
       id.push_back(1'000'000'000'000LL + 7 * static_cast<std::int64_t>(i));
       phase.push_back(static_cast<std::int32_t>(i % 3) - 1);
+      kind.push_back(static_cast<std::int32_t>(i % 2));
     }
   }
   Frame frame(int dimension) const {
@@ -75,6 +77,7 @@ struct Particles {
     f.u = u.data(), f.v = dimension >= 2 ? v.data() : nullptr;
     f.pressure = p.data(), f.density = rho.data(), f.summation_density = rho_sum.data(), f.mass = m.data();
     f.id = id.data(), f.phase = phase.data();
+    f.smoothing_length = h, f.kind = kind.data();
     return f;
   }
 };
@@ -96,6 +99,8 @@ double expected(const Particles& P, FieldId field, int dim, std::size_t i, int c
     case FieldId::mass: return P.m[i];
     case FieldId::id: return static_cast<double>(P.id[i]);
     case FieldId::phase: return P.phase[i];
+    case FieldId::smoothing_length: return P.h;
+    case FieldId::kind: return P.kind[i];
   }
   return NAN;
 }
@@ -158,7 +163,8 @@ void check_vtp_round_trip(int dim) {
 TEST_CASE("output: the field table lists the documented point-data arrays and renders as markdown") {
   std::vector<std::string> names;
   for (const auto& f : kOutputFields) names.emplace_back(f.name);
-  CHECK(names == std::vector<std::string>{"velocity", "pressure", "density", "summation_density", "mass", "id", "phase"});
+  CHECK(names == std::vector<std::string>{"velocity", "pressure", "density", "summation_density", "mass", "id", "phase",
+                                          "h", "kind"});
   const std::string md = output_fields_markdown();
   CHECK(md.rfind("| name | components | type | unit | description |\n|---|---|---|---|---|\n", 0) == 0);
   CHECK(md.find("| `velocity` | 3 | Float64 | m/s |") != std::string::npos);
@@ -238,6 +244,11 @@ TEST_CASE("output: CSV time series rows are flushed, small tables") {
 
 TEST_CASE("output: JSON escaping, number formatting and order") {
   CHECK(json_quote("a \"q\" \\ b\nc\td\x01") == R"("a \"q\" \\ b\nc\td\u0001")");
+  // Well-formed UTF-8 passes through; bytes that are not (a stray continuation byte, a lone lead
+  // byte, an overlong form, a surrogate) become \ufffd, so the file stays valid JSON.
+  CHECK(json_quote("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80") == "\"caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80\"");
+  CHECK(json_quote("a\xFF" "b\x80" "c\xC3") == R"("a\ufffdb\ufffdc\ufffd")");
+  CHECK(json_quote("\xC0\xAF \xED\xA0\x80") == R"("\ufffd\ufffd \ufffd\ufffd\ufffd")");
   CHECK(json_number(std::nan("")) == "null");
   CHECK(json_number(INFINITY) == "null");
   CHECK(json_number(-INFINITY) == "null");

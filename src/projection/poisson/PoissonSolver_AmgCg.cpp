@@ -112,6 +112,12 @@ class PoissonSolverAmgCg final : public PoissonSolver {
 #pragma omp parallel for schedule(static) reduction(+ : res) if (n > kSolverParallelMin)
     for (int i = 0; i < n; ++i) res += q[i] * q[i];
     rel_residual = std::sqrt(res / nb2);
+    if (rr > target2) {
+      SolveReport rep;
+      rep.iterations = it;
+      rep.relative_residual = rel_residual;
+      throw_not_converged("cg_amg", tolerance_, rep);
+    }
     return it;
   }
 

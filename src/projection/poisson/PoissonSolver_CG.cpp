@@ -33,6 +33,7 @@ class PoissonSolverCg final : public PoissonSolver {
     rep.iterations = static_cast<int>(cg.iterations());
     const double nb = bb.norm();
     rep.relative_residual = nb > 0 ? (A * pp - bb).norm() / nb : 0.0;
+    if (cg.info() != Eigen::Success) throw_not_converged(name_, tolerance_, rep);
     return rep;
   }
 

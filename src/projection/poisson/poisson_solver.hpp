@@ -28,6 +28,10 @@ struct SolveReport {
   bool refactored_symbolic = false;
 };
 
+// NumericalFailure (exit 3) for an iterative solver that stopped at its iteration limit above the
+// tolerance, naming the key, the iterations and the residual reached.
+[[noreturn]] void throw_not_converged(const std::string& solver, double tolerance, const SolveReport& reached);
+
 class PoissonSolver {
  public:
   virtual ~PoissonSolver() = default;

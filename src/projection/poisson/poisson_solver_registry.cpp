@@ -1,4 +1,7 @@
 // Poisson solvers by name: one line each.
+#include <cstdio>
+
+#include "core/errors.hpp"
 #include "core/param_builder.hpp"
 #include "projection/poisson/poisson_solver.hpp"
 
@@ -17,9 +20,19 @@ const Registry<PoissonSolverFactory>& poisson_solvers() {
       {"cg_ic", "conjugate gradients with an incomplete-Cholesky preconditioner, warm-started", make_poisson_solver_cg_ic},
       {"cg_amg", "conjugate gradients preconditioned by one V-cycle of smoothed-aggregation AMG", make_poisson_solver_cg_amg},
       {"auto", "KLU up to 400 unknowns, cg_amg above (KLU for the exact operator)", make_poisson_solver_auto},
-  }, {number("method.ppe_tolerance", 1e-10).in(between(0, 1, true, true))
-          .doc("relative residual at which the iterative Poisson solvers stop").to(&Scene::ppe_tolerance)});
+  }, {number("method.ppe_tolerance", 1e-10).in(between(1e-15, 1, false, true))
+          .doc("relative residual at which the iterative Poisson solvers stop (not reached within their "
+               "iteration limit: exit 3); below 1e-15 it is under the round-off of the residual").to(&Scene::ppe_tolerance)});
   return r;
+}
+
+void throw_not_converged(const std::string& solver, double tolerance, const SolveReport& reached) {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "%s: the pressure Poisson equation did not reach method.ppe_tolerance = %.3g in %d iterations "
+                "(relative residual %.3g); raise method.ppe_tolerance or use method.ppe_solver = \"klu\"",
+                solver.c_str(), tolerance, reached.iterations, reached.relative_residual);
+  throw NumericalFailure(text);
 }
 
 std::vector<std::string> poisson_solver_names() { return poisson_solvers().names(); }

@@ -1,0 +1,24 @@
+#include "run/omp_thread_limit.hpp"
+
+#include <cstdio>
+#include <thread>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace arksph {
+
+void bound_omp_threads() {
+#ifdef _OPENMP
+  const int processors = static_cast<int>(std::thread::hardware_concurrency());
+  const int cap = kThreadsPerProcessor * (processors > 0 ? processors : 1);
+  const int asked = omp_get_max_threads();
+  if (asked <= cap) return;
+  omp_set_num_threads(cap);
+  std::fprintf(stderr, "arksph: OMP_NUM_THREADS asks for %d threads on %d processors; using %d (at most %d per processor)\n",
+               asked, processors, cap, kThreadsPerProcessor);
+#endif
+}
+
+}  // namespace arksph

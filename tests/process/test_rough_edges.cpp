@@ -1,0 +1,316 @@
+// What a new user and a hostile one meet at the command line: per-command help, the console's
+// report of a run, progress in a log, the frames' fields, and input that used to write outside the
+// output folder, hang, crash or give silently wrong values. Each case starts the binary as a user
+// would; ARKSPH_TEST_BINARY runs them against another build (run_arksph.hpp).
+#include <doctest/doctest.h>
+
+#include <hdf5.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "io/json_reader.hpp"
+#include "run_arksph.hpp"
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+using arksph::testing::run_arksph_captured;
+using arksph::testing::run_command_captured;
+using arksph::testing::RunOutcome;
+using arksph::testing::ScratchDir;
+using arksph::testing::slurp;
+
+namespace {
+
+// 10 x 10 particles at rest in a closed box, 0.01 s: the smallest run that writes every output.
+const char* const kBox = R"(
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[fluid]
+spacing = 0.1
+[time]
+end = 0.01
+)";
+
+struct Scratch {
+  ScratchDir dir;
+  std::string scene, out;
+  explicit Scratch(const std::string& tag) : dir(tag), scene(dir / "S.toml"), out(dir / "out") {
+    std::ofstream(scene) << kBox;
+  }
+  RunOutcome arksph(const std::string& args, long max_file_bytes = -1) const {
+    return run_arksph_captured(args, dir.dir.string(), max_file_bytes);
+  }
+};
+
+bool says(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+int lines_of(const std::string& text) {
+  int n = 0;
+  for (char c : text) n += c == '\n';
+  return n;
+}
+
+double summary_number(const std::string& dir, const char* key) {
+  const arksph::JsonValue j = arksph::read_json_file(dir + "/summary.json");
+  const arksph::JsonValue* v = j.find(key);
+  REQUIRE(v != nullptr);
+  return v->number;
+}
+
+// Overwrites the scalar 64-bit integer attribute `name` of the checkpoint's root group.
+void set_checkpoint_attribute(const std::string& path, const char* name, std::int64_t value) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  const hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
+  REQUIRE(attr >= 0);
+  CHECK(H5Awrite(attr, H5T_NATIVE_INT64, &value) >= 0);
+  H5Aclose(attr);
+  H5Fclose(file);
+}
+
+}  // namespace
+
+TEST_CASE("rough edges: item 3, every command answers --help with its own usage, exit 0") {
+  const Scratch s("help");
+  const struct {
+    const char* args;
+    const char* usage;
+  } commands[] = {{"run --help", "usage: arksph run"},
+                  {"default-scene --help", "usage: arksph default-scene"},
+                  {"scene-reference -h", "usage: arksph scene-reference"},
+                  {"list --help", "usage: arksph list"},
+                  {"--help", "usage: arksph COMMAND"}};
+  for (const auto& c : commands) {
+    CAPTURE(c.args);
+    const RunOutcome o = s.arksph(c.args);
+    CHECK(o.code == 0);
+    CHECK(says(o.out, c.usage));
+    CHECK(o.err.empty());
+    CHECK_FALSE(says(o.out, "[domain]"));  // not the default scene
+  }
+  // The run's help lists its options; the overview says that ISPH runs over ranks too.
+  CHECK(says(s.arksph("run --help").out, "--progress-every"));
+  CHECK(says(s.arksph("--help").out, "WCSPH or ISPH decomposed over P MPI ranks"));
+  // Arguments a command does not take are bad input, named.
+  const RunOutcome bad = s.arksph("default-scene --bogus");
+  CHECK(bad.code == 2);
+  CHECK(says(bad.err, "--bogus: unknown argument"));
+}
+
+TEST_CASE("rough edges: item 37, two --restart options are refused instead of the last one winning") {
+  const Scratch s("two_restarts");
+  const RunOutcome o = s.arksph("run --restart a.h5 --restart b.h5");
+  CHECK(o.code == 2);
+  CHECK(lines_of(o.err) == 1);
+  CHECK(says(o.err, "--restart given twice"));
+}
+
+TEST_CASE("rough edges: item 5, the end of a run prints every metric the scene set") {
+  const Scratch s("metrics");
+  const std::string scene = s.dir / "tg.toml";
+  std::ofstream(scene) << arksph::testing::test_scene("taylor_green_vortex_25.toml");
+  const RunOutcome o = s.arksph("run " + scene + " --quiet --out " + s.out + " --set time.end=0.01");
+  REQUIRE(o.code == 0);
+  CHECK(says(o.out, "velocity L1 relative error"));
+  CHECK(says(o.out, "CV"));
+}
+
+TEST_CASE("rough edges: item 6, a rerun into a folder says that it replaces the earlier run") {
+  const Scratch s("rerun");
+  const std::string args = "run " + s.scene + " --quiet --out " + s.out + " --set output.every=0.005";
+  REQUIRE(s.arksph(args).code == 0);
+  const RunOutcome first_again = s.arksph(args);
+  REQUIRE(first_again.code == 0);
+  CHECK(says(first_again.out, "replacing the earlier run in " + s.out + ": 3 frames"));
+  // A file of the user's that only looks like a checkpoint is not removed: the folder is refused.
+  std::ofstream(s.out + "/checkpoint_backup_t5.h5") << "mine";
+  const RunOutcome refused = s.arksph(args);
+  CHECK(refused.code == 2);
+  CHECK(says(refused.err, "checkpoint_backup_t5.h5"));
+  CHECK(slurp(s.out + "/checkpoint_backup_t5.h5") == "mine");
+}
+
+TEST_CASE("rough edges: item 7, a log gets progress lines between frames (--progress-every)") {
+  const Scratch s("progress");
+  // The default cavity to t = 0.01 (several steps); output.every = 0: frames at t = 0 and at the end
+  // only. stderr is a file here, not a terminal.
+  const RunOutcome o = s.arksph("run --out " + s.out + " --set time.end=0.01 --set output.every=0 --progress-every 0");
+  REQUIRE(o.code == 0);
+  const long steps = static_cast<long>(summary_number(s.out, "steps"));
+  REQUIRE(steps >= 3);
+  int progress_lines = 0;
+  for (std::size_t at = o.err.find("  t = "); at != std::string::npos; at = o.err.find("  t = ", at + 1))
+    ++progress_lines;
+  CHECK(progress_lines >= steps);  // one after every step with --progress-every 0, besides the frames'
+  const RunOutcome bad = s.arksph("run " + s.scene + " --out " + s.out + " --progress-every soon");
+  CHECK(bad.code == 2);
+  CHECK(says(bad.err, "--progress-every soon: not a number of seconds"));
+}
+
+TEST_CASE("rough edges: item 8, frames carry the smoothing length h and the particle kind") {
+  const Scratch s("frame_fields");
+  REQUIRE(s.arksph("run " + s.scene + " --quiet --out " + s.out).code == 0);
+  const std::string vtp = slurp(s.out + "/particles_000000.vtp");
+  CHECK(says(vtp, "Name=\"h\""));
+  CHECK(says(vtp, "Name=\"kind\""));
+}
+
+TEST_CASE("rough edges: item 12, a control character in --out stays in the folder name") {
+  const Scratch s("control_char");
+  // $(printf ...) puts a real newline into the argument; the folder is created with it in its name.
+  const RunOutcome o = s.arksph("run " + s.scene + " --quiet --out \"$(printf '" + s.out + "\\nx\"y')\"");
+  CHECK(o.code == 0);
+  CHECK(fs::exists(s.out + "\nx\"y/summary.json"));
+  int entries = 0;  // S.toml and the one output folder, nothing else
+  for (const auto& e : fs::directory_iterator(s.dir.dir)) entries += e.path().filename().string()[0] != '.';
+  CHECK(entries == 2);
+}
+
+TEST_CASE("rough edges: item 13, run outputs that are symbolic links refuse the folder and are not followed") {
+  for (const char* name : {".arksph.lock", "timeseries.csv", "summary.json", "particles_000000.vtp"}) {
+    CAPTURE(name);
+    const Scratch s("links");
+    const std::string victim = s.dir / "victim.txt";
+    std::ofstream(victim) << "precious";
+    fs::create_directories(s.out);
+    fs::create_symlink(victim, s.out + "/" + name);
+    const RunOutcome o = s.arksph("run " + s.scene + " --quiet --out " + s.out + " --overwrite");
+    CHECK(o.code == 2);
+    CHECK(lines_of(o.err) == 1);
+    CHECK(says(o.err, "is a symbolic link"));
+    CHECK(slurp(victim) == "precious");
+  }
+}
+
+TEST_CASE("rough edges: item 15, a checkpoint attribute out of range is refused at once, not looped over") {
+  const Scratch s("checkpoint_attributes");
+  REQUIRE(s.arksph("run " + s.scene + " --quiet --out " + s.out).code == 0);
+  const std::string original = s.dir / "original.h5";
+  fs::copy_file(s.out + "/checkpoint.h5", original);
+  const struct {
+    const char* attribute;
+    std::int64_t value;
+  } edits[] = {{"output_frame", std::int64_t{1} << 62}, {"steps", -5}, {"checkpoint_index", std::int64_t{1} << 40}};
+  for (const auto& e : edits) {
+    const std::string attribute = e.attribute;
+    CAPTURE(attribute);
+    const std::string edited = s.dir / "edited.h5";
+    fs::copy_file(original, edited, fs::copy_options::overwrite_existing);
+    set_checkpoint_attribute(edited, e.attribute, e.value);
+    const RunOutcome o = run_command_captured("timeout -s KILL 60 " + arksph::testing::arksph_binary() + " run --quiet --restart " +
+                                                  edited + " --out " + (s.dir / "continued") + " --set time.end=0.02",
+                                              s.dir.dir.string());
+    CAPTURE(o.err);
+    CHECK(o.code == 2);  // 137 (SIGKILL from timeout) when the restart loops
+    CHECK(says(o.err, attribute + " = "));
+  }
+}
+
+TEST_CASE("rough edges: item 28, a dataset stored with another datatype than arksph writes is refused") {
+  const Scratch s("checkpoint_datatype");
+  REQUIRE(s.arksph("run " + s.scene + " --quiet --out " + s.out).code == 0);
+  const std::string edited = s.dir / "edited.h5";
+  fs::copy_file(s.out + "/checkpoint.h5", edited);
+  {  // /state/u again, as big-endian doubles: HDF5 would convert them silently on reading
+    const hid_t file = H5Fopen(edited.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    const hid_t old_set = H5Dopen2(file, "/state/u", H5P_DEFAULT);
+    REQUIRE(old_set >= 0);
+    const hid_t space = H5Dget_space(old_set);
+    std::vector<double> u(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    CHECK(H5Dread(old_set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, u.data()) >= 0);
+    H5Dclose(old_set);
+    CHECK(H5Ldelete(file, "/state/u", H5P_DEFAULT) >= 0);
+    const hsize_t n[1] = {u.size()};
+    const hid_t fixed = H5Screate_simple(1, n, nullptr);
+    const hid_t set = H5Dcreate2(file, "/state/u", H5T_IEEE_F64BE, fixed, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(set >= 0);
+    CHECK(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, u.data()) >= 0);
+    H5Dclose(set);
+    H5Sclose(fixed);
+    H5Sclose(space);
+    H5Fclose(file);
+  }
+  const RunOutcome o = s.arksph("run --quiet --restart " + edited + " --out " + (s.dir / "continued"));
+  CAPTURE(o.err);
+  CHECK(o.code == 2);
+  CHECK(says(o.err, "/state/u is not stored as a little-endian 64-bit float"));
+}
+
+TEST_CASE("rough edges: item 18, a file-size limit ends the run with exit 5 and a message, no temporaries left") {
+  const Scratch s("file_size_limit");
+  // The shell's ulimit -f counts 512-byte blocks: 32 KiB, enough for the small files, not a 1600-particle frame.
+  const RunOutcome o = run_command_captured("sh -c 'ulimit -f 64; exec " + arksph::testing::arksph_binary() +
+                                                " run --quiet --out " + s.out + " --set time.end=0.001'",
+                                            s.dir.dir.string());
+  CHECK(o.code == 5);
+  CHECK(says(o.err, "cannot write"));
+  for (const auto& e : fs::directory_iterator(s.out)) {
+    CAPTURE(e.path().string());
+    CHECK_FALSE(says(e.path().filename().string(), ".tmp."));
+  }
+}
+
+TEST_CASE("rough edges: item 20, an absurd OMP_NUM_THREADS is bounded with a message") {
+  const Scratch s("threads");
+  const RunOutcome o = run_command_captured("env OMP_NUM_THREADS=100000 " + arksph::testing::arksph_binary() + " run " +
+                                                s.scene + " --quiet --out " + s.out,
+                                            s.dir.dir.string());
+  CHECK(o.code == 0);
+  CHECK(says(o.err, "OMP_NUM_THREADS asks for 100000 threads"));
+}
+
+TEST_CASE("rough edges: item 24, printing the default scene or the reference to a full disk exits 5") {
+  const Scratch s("stdout_full");
+  for (const char* command : {"default-scene", "scene-reference"}) {
+    CAPTURE(command);
+    const RunOutcome o = s.arksph(command, 1000);  // stdout is a file limited to 1000 bytes
+    CHECK(o.code == 5);
+    CHECK(says(o.err, "standard output could not be written"));
+  }
+}
+
+TEST_CASE("rough edges: item 25, summary.json's final_time is the time reached, not the last frame's") {
+  const Scratch s("final_time");
+  // The default cavity (about 7 steps to t = 0.01), frames at t = 0 and at the end only; the step
+  // budget stops the run after 4 steps.
+  const RunOutcome o = s.arksph("run --quiet --out " + s.out +
+                                " --set time.end=0.01 --set output.every=0 --set time.max_steps=4");
+  CHECK(o.code == 3);
+  const double reached = summary_number(s.out, "final_time");
+  CHECK(reached > 0);
+  CHECK(reached < 0.01);
+  CHECK(summary_number(s.out, "steps") == 4);
+}
+
+TEST_CASE("rough edges: item 26, an orthogonal-projection run is labelled orthogonal") {
+  const Scratch s("orthogonal_label");
+  const std::string scene = s.dir / "tg.toml";
+  std::ofstream(scene) << arksph::testing::test_scene("taylor_green_vortex_25.toml");
+  const RunOutcome o = s.arksph("run " + scene + " --quiet --out " + s.out +
+                                " --set time.end=0.002 --set method.scheme=isph --set method.projection=orthogonal");
+  REQUIRE(o.code == 0);
+  CHECK(says(o.out, "orthogonal projection"));
+  CHECK_FALSE(says(o.out, "constrained"));
+}
+
+TEST_CASE("rough edges: items 27, 30, values the reference used to admit and that fail are refused, named") {
+  const Scratch s("admitted_values");
+  const struct {
+    const char* set;
+    const char* key;
+  } values[] = {{"method.ppe_tolerance=1e-300", "method.ppe_tolerance"},
+                {"method.h_over_dx=0.5", "method.h_over_dx"}};
+  for (const auto& v : values) {
+    CAPTURE(v.set);
+    const RunOutcome o = s.arksph("run " + s.scene + " --quiet --out " + s.out + " --set method.scheme=isph --set " + v.set);
+    CHECK(o.code == 2);
+    CHECK(lines_of(o.err) == 1);
+    CHECK(says(o.err, v.key));
+  }
+}

@@ -10,6 +10,7 @@
 #include "app/cli_args.hpp"
 #include "core/errors.hpp"
 #include "run/interrupt.hpp"
+#include "run/launcher_ranks.hpp"
 #include "study/batch.hpp"
 #include "study/order_study.hpp"
 #include "study/work_precision.hpp"
@@ -32,11 +33,15 @@ const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
     "  Temporal order of ARKODE tables on one scene at fixed steps (docs/user-guide.md, \"Order study\").\n"
     "  Writes <out>/order_errors.csv and <out>/order_fit.csv; exit 0 if every table is within the\n"
-    "  tolerance of its nominal order, 4 if one is flagged, 2 for bad input.\n"
+    "  tolerance of its nominal order, 4 if one is flagged, 2 for bad input or a folder in use, 5 if the\n"
+    "  output cannot be written.\n"
     "usage: arksph study work-precision STUDY.toml [--out DIR] [--jobs N] [--set KEY=VALUE ...] [--quiet]\n"
     "  Error against wall time for schemes x resolutions (docs/user-guide.md, \"Work-precision study\").\n"
     "  Writes <out>/work_precision.csv (and .png), prints which scheme reaches the target error soonest;\n"
-    "  exit 0, 3 if the reference run failed or no run finished, 2 for bad input.\n";
+    "  exit 0, 3 if the reference run failed or no run has a finite error, 2 for bad input or a folder in use,\n"
+    "  5 if the output cannot be written.\n"
+    "  A study runs in one process (not under mpirun). Its plot is given ARKSPH_PLOT_TIMEOUT seconds (default 60).\n"
+    "  Study file keys: docs/user-guide.md, \"Studies\".\n";
 
 int parse_int(const std::string& opt, const std::string& v) {
   char* end = nullptr;
@@ -139,6 +144,16 @@ int cmd_study(int argc, char** argv) {
       return 0;
     }
   const StudyArgs args = parse_study_args(kind, argc - 1, argv + 1);
+  // A study runs in one process and its runs are one-process runs: under a launcher of K > 1
+  // processes each would run the whole study into the same folder. Refused, rank 0 saying why.
+  if (const LauncherRanks ranks = launcher_ranks_from_environment(); ranks.size > 1) {
+    if (ranks.rank == 0)
+      std::fprintf(stderr,
+                   "arksph: study %s: started as %d processes by an MPI launcher; a study runs in one process "
+                   "(its runs are one-process runs): start it without mpirun\n",
+                   kind.c_str(), ranks.size);
+    return 2;
+  }
   return kind == "order" ? cmd_order_study(args) : cmd_work_precision_study(args);
 }
 

@@ -94,11 +94,12 @@ std::string new_run_id() {
   return id;
 }
 
-OutputFolder::OutputFolder(const std::string& dir, const std::string& source) : dir_(dir), source_(source) {
+OutputFolder::OutputFolder(const std::string& dir, const std::string& source, const std::string& key)
+    : dir_(dir), source_(source), key_(key) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw OutputError("cannot write " + dir + ": cannot create the folder (output.directory of " + source +
+    throw OutputError("cannot write " + dir + ": cannot create the folder (" + key + " of " + source +
                       "): " + (ec ? ec.message() : "not a directory"));
   const std::string lock = (fs::path(dir) / kLockName).string();
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
@@ -111,7 +112,7 @@ OutputFolder::OutputFolder(const std::string& dir, const std::string& source) : 
     if (err != EWOULDBLOCK) throw OutputError("cannot write " + lock + ": flock: " + std::strerror(err));
     std::string pid = slurp(lock);
     while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
-    throw InputError(source + ": output.directory: " + dir + " is in use by another arksph run (pid " +
+    throw InputError(source + ": " + key + ": " + dir + " is in use by another arksph run (pid " +
                      (all_digits(pid) ? pid : std::string("unknown")) +
                      "); wait for it to finish or choose another --out");
   }
@@ -144,7 +145,7 @@ void OutputFolder::refuse_foreign_files() const {
   std::string list;
   for (const auto& f : foreign) list += (list.empty() ? "" : ", ") + f;
   if (count > foreign.size()) list += ", ... (" + std::to_string(count) + " in all)";
-  throw InputError(source_ + ": output.directory: " + dir_ + " holds files that are not arksph run outputs (" + list +
+  throw InputError(source_ + ": " + key_ + ": " + dir_ + " holds files that are not arksph run outputs (" + list +
                    "); choose an empty or new folder, or give --overwrite to write beside them");
 }
 

@@ -32,8 +32,9 @@ std::string new_run_id();
 class OutputFolder {
  public:
   // Creates `dir` (OutputError if it cannot be created) and takes its lock (InputError naming the
-  // pid of the run that holds it). `source` prefixes the messages (the scene file).
-  OutputFolder(const std::string& dir, const std::string& source);
+  // pid of the run that holds it). `source` prefixes the messages (the scene, sweep or study file),
+  // `key` names the setting that chose the folder (output.directory of a scene, study.output).
+  OutputFolder(const std::string& dir, const std::string& source, const std::string& key = "output.directory");
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -53,7 +54,7 @@ class OutputFolder {
   std::string run_id(bool* unidentified = nullptr) const;
 
  private:
-  std::string dir_, source_;
+  std::string dir_, source_, key_;
   int lock_fd_ = -1;
 };
 

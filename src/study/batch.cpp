@@ -160,7 +160,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
   std::error_code ec;
   // One batch per folder at a time (exit 2 naming the pid); the ranks > 0 of a launch join rank 0's.
   std::unique_ptr<OutputFolder> folder;
-  if (ranks.rank == 0) folder = std::make_unique<OutputFolder>(out, sw.source);
+  if (ranks.rank == 0 && !opt.folder_locked) folder = std::make_unique<OutputFolder>(out, sw.source);
   if (ranks.size > 1 && ranks.rank == 0) publish_batch_group(out, ranks);
   if (ranks.rank > 0) join_batch_group(out, ranks, kJoinTimeoutSeconds);
 

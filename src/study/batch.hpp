@@ -25,6 +25,7 @@ struct BatchOptions {
   std::string executable;   // the arksph binary ("" : /proc/self/exe)
   bool quiet = false;       // no progress lines
   bool launcher_ranks = false;  // share the runs with the other processes of an MPI launch (if any)
+  bool folder_locked = false;   // the caller holds the output folder's lock (a study): not taken again
 };
 
 struct BatchRunResult {

@@ -3,14 +3,19 @@
 
 #include <toml++/toml.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
+#include <set>
 #include <sstream>
 
+#include "run/output_folder.hpp"
 #include "run/setup.hpp"
 #include "run/time_stepper.hpp"
 #include "core/errors.hpp"
@@ -18,7 +23,9 @@
 #include "integrate/erk_integrator.hpp"
 #include "integrate/time_params.hpp"
 #include "io/scene_reader.hpp"
+#include "io/scene_schema.hpp"
 #include "projection/divergence_operator.hpp"
+#include "study/plot_command.hpp"
 #include "study/reference_error.hpp"
 #include "study/study_file.hpp"
 
@@ -74,15 +81,50 @@ std::vector<double> end_pressure(Model& model, TimeStepper& stepper, double t, c
   return {rhs.fields().p.begin(), rhs.fields().p.begin() + static_cast<long>(n)};
 }
 
-RunEnd run_scene(const Scene& base, const std::string& table, double dt, long* rhs_evals) {
-  Scene scene = base;  // an ERK table runs explicitly, an IMEX pair with the viscous term implicit
-  scene.imex = is_imex(table);
-  if (scene.imex) scene.imex_pair = pair_of(table);
+// The steps of a table, and the study key that lists them.
+const std::vector<double>& steps_of(const OrderStudy& s, const std::string& table) {
+  return s.dt_for.count(table) ? s.dt_for.at(table) : s.dt;
+}
+std::string steps_key(const OrderStudy& s, const std::string& table) {
+  return s.dt_for.count(table) ? "dt_for." + table : "study.dt";
+}
+
+// The file the study's messages name: the study file, or the scene of a study built in code.
+std::string study_path(const OrderStudy& s) { return s.source.empty() ? s.scene : s.source; }
+
+// A step as a --set value that reads back exactly and stays a TOML float.
+std::string step_text(double dt) {
+  std::string t = scene_schema::format_number(dt);
+  if (t.find_first_of(".eEn") == std::string::npos) t += ".0";
+  return t;
+}
+
+// The scene of one run of the study, read as `arksph run` reads it (the same function, so it refuses
+// what a run refuses): the study's scene with its --set values, then the table's (an ERK table
+// explicitly, an IMEX pair with the viscous term implicit) and the fixed step. InputError with the
+// reader's message, prefixed with the study file and the run.
+Scene order_run_scene(const OrderStudy& s, const std::string& text, const std::string& table, double dt,
+                      const std::string& what) {
+  std::vector<std::string> sets = s.sets;
+  if (is_imex(table)) sets.insert(sets.end(), {"time.imex=true", "time.imex_pair=" + pair_of(table)});
+  else sets.insert(sets.end(), {"time.imex=false", "time.integrator=" + table});
+  sets.push_back("time.dt=" + step_text(dt));
+  std::ostringstream warnings;
+  try {
+    return read_scene_text(text, s.scene, sets, warnings);
+  } catch (const InputError& e) {
+    throw InputError(study_path(s) + ": " + what + " " + table + " at dt " + message_number(dt) +
+                     " (as arksph run reads it): " + e.what());
+  }
+}
+
+RunEnd run_scene(const Scene& scene, long* rhs_evals) {
   Model model = build_model(scene);
   std::vector<double> y0(model.rhs->layout().size());
   model.rhs->initial_state(y0.data());
   ErkOptions o;
-  o.table = scene.imex ? base.integrator : table;
+  const double dt = scene.dt;
+  o.table = scene.integrator;  // unused under time.imex
   o.fixed_dt = dt;
   const Tolerances tol = integrator_tolerances(scene, dt);  // fixed steps: the implicit solves' tolerances
   o.rtol = tol.rtol;
@@ -91,7 +133,13 @@ RunEnd run_scene(const Scene& base, const std::string& table, double dt, long* r
   TimeStepper stepper = make_time_stepper(scene, *model.rhs, o, y0, 0.0, model.projection.get());
   TimeIntegrator& integ = *stepper.integrator;
   double t = 0;
-  while (t < scene.end) t = stepper.step(t, scene.end);  // the run loop's step, projection included
+  while (t < scene.end) {  // the run loop's step, projection included
+    const double next = stepper.step(t, scene.end);
+    if (!(next > t))
+      throw NumericalFailure("order study: the step from t = " + message_number(t) + " did not advance (dt " +
+                             message_number(dt) + ")");
+    t = next;
+  }
   if (rhs_evals) *rhs_evals = integ.stats().rhs_evals + integ.stats().implicit_rhs_evals;
   RunEnd end;
   end.state.assign(integ.state(), integ.state() + integ.size());
@@ -107,11 +155,96 @@ int nominal_order(const std::string& table) {
   return is_imex(table) ? imex_pair_order(pair_of(table)) : erk_table_order(table);
 }
 
+// The largest |a_i - b_i| over [first, last); NaN if a difference is NaN (a state that is not finite).
 double max_diff(const std::vector<double>& a, const std::vector<double>& b, std::size_t first = 0,
                 std::size_t last = static_cast<std::size_t>(-1)) {
   double m = 0;
-  for (std::size_t i = first; i < std::min({a.size(), b.size(), last}); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  for (std::size_t i = first; i < std::min({a.size(), b.size(), last}); ++i) {
+    const double d = std::abs(a[i] - b[i]);
+    if (std::isnan(d)) return d;
+    m = std::max(m, d);
+  }
   return m;
+}
+
+bool all_finite(const std::vector<double>& v) {
+  for (const double x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+// A number of the console table: NaN as "NaN" (printf gives "-nan" for some).
+std::string table_number(double v, const char* format) {
+  if (std::isnan(v)) return "NaN";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// A number of the CSV files: NaN as "nan" whatever its sign.
+struct CsvNumber {
+  double v;
+};
+std::ostream& operator<<(std::ostream& os, CsvNumber n) {
+  if (std::isnan(n.v)) return os << "nan";
+  return os << n.v;
+}
+
+// Checks of the study as a whole, before any run (InputError naming the study key): each table's
+// steps (two different ones at least, none longer than time.end, each able to advance t at
+// time.end within time.max_steps steps, the reference step too), then every run's scene as `arksph
+// run` reads it, and an analytic reference that is finite at the particles. Returns the study's scene.
+Scene check_order_study(const OrderStudy& s) {
+  const std::string path = study_path(s);
+  const auto bad = [&](const std::string& key, const std::string& why) { return InputError(path + ": " + key + ": " + why); };
+  const std::string text = read_text_file(s.scene);
+  std::ostringstream warnings;
+  const Scene base = read_scene_text(text, s.scene, s.sets, warnings);
+  using scene_schema::format_number;
+  const double end = base.end, spacing_at_end = std::nextafter(end, INFINITY) - end;
+  const auto check_step = [&](const std::string& key, double dt, const std::string& what) {
+    if (!(dt >= spacing_at_end))
+      throw bad(key, what + format_number(dt) + " is below the spacing of doubles at time.end = " + format_number(end) +
+                         " (" + format_number(spacing_at_end) + "): t + dt == t, a run could not advance");
+    const double steps = std::ceil(end / dt);
+    if (steps > static_cast<double>(base.max_steps))
+      throw bad(key, what + format_number(dt) + " takes " + format_number(steps) + " steps to time.end = " +
+                         format_number(end) + ", more than time.max_steps = " + std::to_string(base.max_steps));
+  };
+  const bool analytic = s.reference == "analytic";
+  double dt_min_all = std::numeric_limits<double>::infinity();
+  for (const auto& table : s.tables) {
+    const auto& steps = steps_of(s, table);
+    const std::string key = steps_key(s, table);
+    if (std::set<double>(steps.begin(), steps.end()).size() < 2)
+      throw bad(key, "the steps are all equal (" + format_number(steps.front()) +
+                         "): at least two different step sizes are needed for a slope");
+    for (const double dt : steps) {
+      if (dt > end)
+        throw bad(key, format_number(dt) + " is longer than time.end = " + format_number(end) +
+                           ": a run then takes a single step to time.end whatever the step, so its error cannot "
+                           "show an order");
+      check_step(key, dt, "");
+    }
+    const double dt_min = *std::min_element(steps.begin(), steps.end());
+    dt_min_all = std::min(dt_min_all, dt_min);
+    if (!analytic && s.reference_table.empty())
+      check_step("study.reference_dt_divisor", dt_min / s.reference_dt_divisor,
+                 "the reference step of " + table + " (" + key + " / divisor) ");
+  }
+  if (!analytic && !s.reference_table.empty())
+    check_step("study.reference_dt_divisor", dt_min_all / s.reference_dt_divisor, "the reference step (smallest step / divisor) ");
+  for (const auto& table : s.tables) {
+    const auto& steps = steps_of(s, table);
+    for (const double dt : steps) order_run_scene(s, text, table, dt, "table");
+    if (!analytic && s.reference_table.empty())
+      order_run_scene(s, text, table, *std::min_element(steps.begin(), steps.end()) / s.reference_dt_divisor,
+                      "reference run of table");
+  }
+  if (!analytic && !s.reference_table.empty())
+    order_run_scene(s, text, s.reference_table, dt_min_all / s.reference_dt_divisor, "reference table");
+  if (analytic) check_analytic_velocity_finite(path, s.analytic_velocity, base);
+  return base;
 }
 
 }  // namespace
@@ -200,19 +333,19 @@ OrderStudy read_order_study(const std::string& path, const std::vector<std::stri
   }
   s.sets.insert(s.sets.end(), extra_sets.begin(), extra_sets.end());
   if (s.output.empty()) s.output = "runs/" + fs::path(path).stem().string();
-  std::ostringstream warnings;
-  read_scene_text(read_text_file(s.scene), s.scene, s.sets, warnings);  // bad scene or set: exit 2 before any run
+  check_order_study(s);  // bad scene, set or step, or a run that `arksph run` refuses: exit 2 before any run
   return s;
 }
 
 std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
-  std::ostringstream warnings;
-  const Scene scene = read_scene_text(read_text_file(study.scene), study.scene, study.sets, warnings);
+  const Scene scene = check_order_study(study);  // every run checked before the first starts
+  const std::string text = read_text_file(study.scene);
+  const auto scene_of = [&](const std::string& table, double dt) { return order_run_scene(study, text, table, dt, "table"); };
   std::vector<OrderFit> fits;
   // A common reference table runs once, at the smallest step of the whole study / divisor.
   double dt_min_all = 1e300;
   for (const auto& table : study.tables)
-    for (double dt : study.dt_for.count(table) ? study.dt_for.at(table) : study.dt) dt_min_all = std::min(dt_min_all, dt);
+    for (double dt : steps_of(study, table)) dt_min_all = std::min(dt_min_all, dt);
   const bool analytic = study.reference == "analytic";
   std::unique_ptr<AnalyticVelocity> exact;
   const StateLayout layout = build_model(scene).rhs->layout();
@@ -227,9 +360,26 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     std::printf("order study: fixed steps; IMEX stages solved to rtol %g, atol %g (min of time.rtol/atol and %g/%g)\n",
                 tol.rtol, tol.atol, kFixedStepRtol, kFixedStepAtol);
   }
+  // Why an error is NaN: the reference (the analytic field at the run's end positions, or the
+  // reference run's end state) or the run's own end state is not finite.
+  const auto nan_cause = [&](const std::vector<double>& y, const RunEnd& ref) -> std::string {
+    if (analytic) {
+      for (std::size_t a = 0; a < layout.n; ++a) {
+        const double x = y[layout.pos(0) + a], z = layout.dim > 1 ? y[layout.pos(1) + a] : 0.0;
+        double u = 0, v = 0;
+        exact->eval(x, z, scene.end, u, v);
+        if (std::isfinite(x) && std::isfinite(z) && !(std::isfinite(u) && std::isfinite(v)))
+          return "study.analytic_velocity is not finite at the end position (" + message_number(x) + ", " +
+                 message_number(z) + "), t = " + message_number(scene.end) + ": the reference is not finite";
+      }
+    } else if (!all_finite(ref.state)) {
+      return "the reference run's end state is not finite";
+    }
+    return all_finite(y) ? "the error is not finite" : "the run's end state is not finite (an unstable step?)";
+  };
   RunEnd shared_ref;
   if (!study.reference_table.empty() && !analytic) {
-    shared_ref = run_scene(scene, study.reference_table, dt_min_all / study.reference_dt_divisor, nullptr);
+    shared_ref = run_scene(scene_of(study.reference_table, dt_min_all / study.reference_dt_divisor), nullptr);
     if (log)
       std::fprintf(stderr, "order: reference %s at dt %.4g\n", study.reference_table.c_str(),
                    dt_min_all / study.reference_dt_divisor);
@@ -238,25 +388,32 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     OrderFit fit;
     fit.table = table;
     fit.nominal = nominal_order(table);
-    const auto& steps = study.dt_for.count(table) ? study.dt_for.at(table) : study.dt;
+    const auto& steps = steps_of(study, table);
     const double dt_min = *std::min_element(steps.begin(), steps.end());
     const RunEnd ref =  // else each table is its own reference at its smallest step / divisor
         analytic                        ? RunEnd{}
-        : study.reference_table.empty() ? run_scene(scene, table, dt_min / study.reference_dt_divisor, nullptr)
+        : study.reference_table.empty() ? run_scene(scene_of(table, dt_min / study.reference_dt_divisor), nullptr)
                                         : shared_ref;
+    bool told = false;  // one line per table about errors that are not finite
     std::vector<double> xs, ys, yu, yp;
     const std::size_t v0 = layout.vel(0), v1 = layout.vel(0) + static_cast<std::size_t>(layout.dim) * layout.n;
     for (double dt : steps) {
       OrderPoint p;
       p.dt = dt;
-      const RunEnd end = run_scene(scene, table, dt, &p.rhs_evals);
+      const RunEnd end = run_scene(scene_of(table, dt), &p.rhs_evals);
       p.error = analytic ? analytic_error(end.state) : max_diff(end.state, ref.state);
       p.velocity_error = analytic ? p.error : max_diff(end.state, ref.state, v0, v1);
       p.pressure_error = analytic ? 0.0 : max_diff(end.pressure, ref.pressure);
       p.divergence = end.divergence;
       if (log)
-        std::fprintf(stderr, "order: %-32s dt %-10.4g error %.4e  velocity %.4e  pressure %.4e  |Du| %.3e\n",
-                     table.c_str(), dt, p.error, p.velocity_error, p.pressure_error, p.divergence);
+        std::fprintf(stderr, "order: %-32s dt %-10.4g error %s  velocity %s  pressure %s  |Du| %s\n", table.c_str(),
+                     dt, table_number(p.error, "%.4e").c_str(), table_number(p.velocity_error, "%.4e").c_str(),
+                     table_number(p.pressure_error, "%.4e").c_str(), table_number(p.divergence, "%.3e").c_str());
+      if (std::isnan(p.error) && !told) {  // reported whatever `log` says: the table's order is NaN
+        std::fprintf(stderr, "arksph: study order: %s at dt %s: the error is NaN: %s\n", table.c_str(),
+                     message_number(dt).c_str(), nan_cause(end.state, ref).c_str());
+        told = true;
+      }
       fit.points.push_back(p);
       xs.push_back(dt), ys.push_back(std::max(p.error, 1e-300));
       yu.push_back(std::max(p.velocity_error, 1e-300)), yp.push_back(std::max(p.pressure_error, 1e-300));
@@ -266,8 +423,8 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
     fit.observed_pressure = analytic ? 0.0 : loglog_slope(xs, yp);
     fit.flagged = !(std::abs(fit.observed - fit.nominal) <= study.tolerance);
     if (log)
-      std::fprintf(stderr, "order: %-32s nominal %d observed %.3f%s\n", table.c_str(), fit.nominal, fit.observed,
-                   fit.flagged ? "  FLAG" : "");
+      std::fprintf(stderr, "order: %-32s nominal %d observed %s%s\n", table.c_str(), fit.nominal,
+                   table_number(fit.observed, "%.3f").c_str(), fit.flagged ? "  FLAG" : "");
     fits.push_back(std::move(fit));
   }
   return fits;
@@ -276,51 +433,50 @@ std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log) {
 int cmd_order_study(const StudyArgs& args) {
   OrderStudy study = read_order_study(args.path, args.sets);
   if (!args.out.empty()) study.output = args.out;
+  // The folder, created and locked before any run, as `arksph run` and `arksph batch` lock theirs:
+  // a second study, batch or run into it is refused (exit 2), a folder that cannot be made gives exit 5.
+  const OutputFolder folder(study.output, args.path, args.out.empty() ? "study.output" : "--out");
   const auto fits = run_order_study(study, !args.quiet);
-  fs::create_directories(study.output);
   const std::string err_csv = (fs::path(study.output) / "order_errors.csv").string();
   const std::string fit_csv = (fs::path(study.output) / "order_fit.csv").string();
   {
     std::ofstream e(err_csv), f(fit_csv);
-    if (!e || !f) throw InputError(study.output + ": cannot write the study output");
+    if (!e || !f) throw OutputError("cannot write " + (e ? fit_csv : err_csv) + ": " + std::strerror(errno ? errno : EIO));
     e << "table,nominal_order,dt,error,rhs_evals,velocity_error,pressure_error,divergence_rms\n";
     f << "table,nominal_order,observed_order,tolerance,flag,fsal_bug_workaround,velocity_order,pressure_order,"
          "divergence_rms\n";
     e.precision(10), f.precision(6);
     for (const auto& fit : fits) {
       for (const auto& p : fit.points)
-        e << fit.table << "," << fit.nominal << "," << p.dt << "," << p.error << "," << p.rhs_evals << ","
-          << p.velocity_error << "," << p.pressure_error << "," << p.divergence << "\n";
-      f << fit.table << "," << fit.nominal << "," << fit.observed << "," << study.tolerance << ","
+        e << fit.table << "," << fit.nominal << "," << p.dt << "," << CsvNumber{p.error} << "," << p.rhs_evals << ","
+          << CsvNumber{p.velocity_error} << "," << CsvNumber{p.pressure_error} << "," << CsvNumber{p.divergence} << "\n";
+      f << fit.table << "," << fit.nominal << "," << CsvNumber{fit.observed} << "," << study.tolerance << ","
         << (fit.flagged ? "FLAG" : "ok") << "," << (!is_imex(fit.table) && erk_table_has_fsal_bug(fit.table) ? 1 : 0)
-        << "," << fit.observed_velocity << "," << fit.observed_pressure << ","
-        << (fit.points.empty() ? 0.0 : fit.points.back().divergence) << "\n";
+        << "," << CsvNumber{fit.observed_velocity} << "," << CsvNumber{fit.observed_pressure} << ","
+        << CsvNumber{fit.points.empty() ? 0.0 : fit.points.back().divergence} << "\n";
     }
   }
   std::printf("%-32s %8s %9s %9s %9s %10s  %s\n", "table", "nominal", "observed", "velocity", "pressure", "|Du| end",
               "flag");
   int flagged = 0;
   for (const auto& fit : fits) {
-    std::printf("%-32s %8d %9.3f %9.3f %9.3f %10.3e  %s\n", fit.table.c_str(), fit.nominal, fit.observed,
-                fit.observed_velocity, fit.observed_pressure, fit.points.empty() ? 0.0 : fit.points.back().divergence,
+    std::printf("%-32s %8d %9s %9s %9s %10s  %s\n", fit.table.c_str(), fit.nominal,
+                table_number(fit.observed, "%.3f").c_str(), table_number(fit.observed_velocity, "%.3f").c_str(),
+                table_number(fit.observed_pressure, "%.3f").c_str(),
+                table_number(fit.points.empty() ? 0.0 : fit.points.back().divergence, "%.3e").c_str(),
                 fit.flagged ? "FLAG" : "ok");
     flagged += fit.flagged;
   }
   std::printf("errors: %s\nfit: %s\n", err_csv.c_str(), fit_csv.c_str());
-  // The plot: scripts/plot_order.py next to the binary's source, if python3 and matplotlib are present.
+  // The plot: scripts/plot_order.py next to the binary's source, if python3 and matplotlib are
+  // present, within the plot time limit (study/plot_command.hpp).
+  std::fflush(stdout);
   const char* plot = std::getenv("ARKSPH_PLOT_ORDER");
   const std::string script = plot ? plot : std::string(ARKSPH_SOURCE_DIR_STR) + "/scripts/plot_order.py";
   const std::string png = (fs::path(study.output) / "order.png").string();
-  if (fs::exists(script))
-    for (const char* python : {"/usr/bin/python3", "python3"}) {  // the system python has Debian's matplotlib
-      const std::string label = study.reference == "analytic" ? " 'max velocity error against the analytic solution'" : "";
-      const std::string cmd = std::string(python) + " '" + script + "' '" + err_csv + "' '" + fit_csv + "' '" + png +
-                              "'" + label + " >/dev/null 2>&1";
-      if (std::system(cmd.c_str()) == 0 && fs::exists(png)) {
-        std::printf("plot: %s\n", png.c_str());
-        break;
-      }
-    }
+  std::vector<std::string> plot_args = {err_csv, fit_csv, png};
+  if (study.reference == "analytic") plot_args.push_back("max velocity error against the analytic solution");
+  run_study_plot("order", script, plot_args, png);
   std::fflush(stdout);
   return flagged ? 4 : 0;
 }

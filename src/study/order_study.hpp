@@ -66,9 +66,14 @@ struct OrderFit {
   std::vector<OrderPoint> points;
 };
 
+// Reads and checks the study (InputError, one line): its keys, its steps (two different ones at
+// least, none longer than time.end, each able to advance time within time.max_steps steps), every
+// run's scene as `arksph run` reads it, and an analytic reference finite at the particles.
 OrderStudy read_order_study(const std::string& path, const std::vector<std::string>& extra_sets);
 
-// Runs the study; `log` true prints one line per run on stderr.
+// Runs the study after the same checks (nothing runs unless every run passes them); `log` true
+// prints one line per run on stderr. An error that is NaN (a reference or end state that is not
+// finite) stays NaN, and one line on stderr names its cause.
 std::vector<OrderFit> run_order_study(const OrderStudy& study, bool log);
 
 // Least-squares slope of log(y) against log(x).
@@ -76,7 +81,7 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 // arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]: writes
 // <out>/order_errors.csv, <out>/order_fit.csv and, with python3 + matplotlib, <out>/order.png.
-// Exit 0, or 4 when a table is flagged.
+// Exit 0, or 4 when a table is flagged. The keys: docs/user-guide.md, "Studies".
 int cmd_order_study(const StudyArgs& args);
 
 }  // namespace arksph

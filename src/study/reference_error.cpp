@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "kernels/kernel.hpp"
 #include "neighbors/cell_list.hpp"
@@ -10,14 +11,21 @@
 namespace arksph {
 
 namespace {
+// A NaN error (a velocity or a reference value that is not finite) makes every norm NaN.
 struct Accumulator {
   double sum = 0, sum2 = 0, max = 0;
   std::size_t n = 0;
+  bool nan = false;
   void add(double e) {
     sum += e, sum2 += e * e, max = std::max(max, e), ++n;
+    nan = nan || std::isnan(e);
   }
   VelocityErrors result() const {
     if (n == 0) return {};
+    if (nan) {
+      const double q = std::numeric_limits<double>::quiet_NaN();
+      return {q, q, q};
+    }
     return {sum / static_cast<double>(n), std::sqrt(sum2 / static_cast<double>(n)), max};
   }
 };

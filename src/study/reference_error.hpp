@@ -6,7 +6,8 @@
 //     finer lattice onto the coarser one):  u_ref(r) = sum_b V_b u_b W(r - r_b) / sum_b V_b W(r - r_b),
 //     V_b = m_b / rho0_b.
 // Per particle e_a = |u_a - u_ref(r_a)| (vector magnitude); L1 = mean e_a, L2 = sqrt(mean e_a^2),
-// Linf = max e_a over the particles of the run.
+// Linf = max e_a over the particles of the run; all three are NaN when some e_a is (a velocity or a
+// reference value that is not finite).
 #pragma once
 #include <array>
 #include <string>

@@ -4,8 +4,10 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,7 +18,9 @@
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
 #include "io/scene_reader.hpp"
+#include "run/output_folder.hpp"
 #include "study/batch.hpp"
+#include "study/plot_command.hpp"
 #include "study/reference_error.hpp"
 #include "study/study_file.hpp"
 
@@ -156,20 +160,23 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
   if (s.resolutions.size() < 2) throw bad("resolution", "at least two [[resolution]] tables are needed for a curve");
   s.sets.insert(s.sets.end(), extra_sets.begin(), extra_sets.end());
   if (s.output.empty()) s.output = "runs/" + fs::path(path).stem().string();
-  // Every run's scene must read (exit 2 before anything runs).
+  // Every run's scene must read, and an analytic reference be finite at its particles (exit 2 before
+  // anything runs).
   const std::string scene_text = read_text_file(s.scene);
   std::ostringstream warnings;
   for (const auto& res : s.resolutions)
     for (const auto& sch : s.schemes) {
-      int ghia_re = 0;
-      try {
-        ghia_re = read_scene_text(scene_text, s.scene, run_sets(s, sch, res), warnings).ghia_re;
-      } catch (const InputError& e) {
-        throw InputError(path + ": scheme " + sch.name + ", resolution " + res.name + ": " + e.what());
-      }
-      if (s.reference == "ghia" && ghia_re == 0)
-        throw bad("study.reference", "ghia needs a scene with [metrics] ghia_re (scheme " + sch.name + ", resolution " +
-                                         res.name + ")");
+      const std::string run = "scheme " + sch.name + ", resolution " + res.name;
+      const Scene scene = [&] {
+        try {
+          return read_scene_text(scene_text, s.scene, run_sets(s, sch, res), warnings);
+        } catch (const InputError& e) {
+          throw InputError(path + ": " + run + ": " + e.what());
+        }
+      }();
+      if (s.reference == "ghia" && scene.ghia_re == 0)
+        throw bad("study.reference", "ghia needs a scene with [metrics] ghia_re (" + run + ")");
+      if (s.reference == "analytic") check_analytic_velocity_finite(path, s.analytic_velocity, scene, run);
     }
   if (s.reference == "run") {
     try {
@@ -215,7 +222,7 @@ Sweep make_sweep(const WorkPrecisionStudy& s) {
 
 void write_csv(const std::string& path, const std::vector<WorkPrecisionPoint>& pts) {
   std::ofstream f(path);
-  if (!f) throw InputError(path + ": cannot write the study output");
+  if (!f) throw OutputError("cannot write " + path + ": " + std::strerror(errno ? errno : EIO));
   f.precision(8);
   f << "scheme,resolution,particles,wall_seconds,steps,rhs_evals,error_l1,error_l2,error_linf,status,run\n";
   for (const auto& p : pts)
@@ -223,18 +230,33 @@ void write_csv(const std::string& path, const std::vector<WorkPrecisionPoint>& p
       << p.rhs_evals << "," << p.l1 << "," << p.l2 << "," << p.linf << "," << p.status << "," << p.run << "\n";
 }
 
+// The plot (scripts/plot_work_precision.py), within the plot time limit (study/plot_command.hpp).
 void plot(const std::string& csv, const std::string& png, double target, const std::string& title) {
   const char* env = std::getenv("ARKSPH_PLOT_WORK_PRECISION");
   const std::string script = env ? env : std::string(ARKSPH_SOURCE_DIR_STR) + "/scripts/plot_work_precision.py";
-  if (!fs::exists(script)) return;
-  for (const char* python : {"/usr/bin/python3", "python3"}) {  // the system python has Debian's matplotlib
-    const std::string cmd = std::string(python) + " '" + script + "' '" + csv + "' '" + png + "' --target " +
-                            std::to_string(target) + " --title '" + title + "' >/dev/null 2>&1";
-    if (std::system(cmd.c_str()) == 0 && fs::exists(png)) {
-      std::printf("plot: %s\n", png.c_str());
-      return;
+  std::fflush(stdout);
+  run_study_plot("work-precision", script, {csv, png, "--target", std::to_string(target), "--title", title}, png);
+}
+
+// Why a finished run has no finite error: the reference at its particles, its own velocities, or its
+// Ghia errors are not finite.
+std::string nan_cause(const WorkPrecisionStudy& study, const ParticleVelocities& run, const ParticleVelocities& ref,
+                      const AnalyticVelocity* exact, double t) {
+  const auto finite = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+  };
+  if (!finite(run.u) || !finite(run.v)) return "its final velocities are not finite";
+  if (study.reference == "analytic" && exact)
+    for (std::size_t a = 0; a < run.x.size(); ++a) {
+      double u = 0, v = 0;
+      exact->eval(run.x[a], run.y[a], t, u, v);
+      if (!std::isfinite(u) || !std::isfinite(v))
+        return "study.analytic_velocity is not finite at its particle (" + message_number(run.x[a]) + ", " +
+               message_number(run.y[a]) + "), t = " + message_number(t) + ": the reference is not finite";
     }
-  }
+  if (study.reference == "run" && (!finite(ref.u) || !finite(ref.v))) return "the reference run's velocities are not finite";
+  if (study.reference == "ghia") return "its Ghia centreline errors (summary.json metrics) are not finite";
+  return "its error is not finite";
 }
 }  // namespace
 
@@ -242,9 +264,13 @@ int cmd_work_precision_study(const StudyArgs& args) {
   WorkPrecisionStudy study = read_work_precision_study(args.path, args.sets);
   if (!args.out.empty()) study.output = args.out;
   if (args.jobs) study.jobs = args.jobs;
+  // The folder is locked for the whole study (the batch, the errors, the CSV, the plot), as `arksph
+  // run` and `arksph batch` lock theirs: a second study, batch or run into it is refused (exit 2).
+  const OutputFolder folder(study.output, args.path, args.out.empty() ? "study.output" : "--out");
   const Sweep sweep = make_sweep(study);
   BatchOptions bo;
   bo.quiet = args.quiet;
+  bo.folder_locked = true;
   const BatchResult batch = run_batch(sweep, bo);
 
   std::size_t first = 0;
@@ -270,6 +296,7 @@ int cmd_work_precision_study(const StudyArgs& args) {
     exact = std::make_unique<AnalyticVelocity>(study.analytic_velocity[0], study.analytic_velocity[1]);
 
   std::vector<WorkPrecisionPoint> pts;
+  std::vector<std::string> not_finite;  // "run DIR: cause" of each finished run without a finite error
   for (std::size_t i = first; i < batch.runs.size(); ++i) {
     const BatchRunResult& r = batch.runs[i];
     WorkPrecisionPoint p;
@@ -291,25 +318,39 @@ int cmd_work_precision_study(const StudyArgs& args) {
                std::max(metric(r, "ghia_u_linf"), metric(r, "ghia_v_linf"))};
         }
         p.l1 = e.l1, p.l2 = e.l2, p.linf = e.linf;
+        if (!std::isfinite(p.l2)) not_finite.push_back(r.dir + ": " + nan_cause(study, run, ref, exact.get(), t));
       } catch (const InputError& e) {
         p.status = "no_checkpoint";
       }
     }
     pts.push_back(p);
   }
-  fs::create_directories(study.output);
   const std::string csv = (fs::path(study.output) / "work_precision.csv").string();
   write_csv(csv, pts);
 
   std::printf("%-16s %-12s %9s %10s %12s  %s\n", "scheme", "resolution", "particles", "wall [s]", "L2 error", "status");
   double lo = 1e300, hi = 0;
   for (const auto& p : pts) {
-    std::printf("%-16s %-12s %9ld %10.3f %12.4e  %s\n", p.scheme.c_str(), p.resolution.c_str(), p.particles,
-                p.wall_seconds, p.l2, p.status.c_str());
+    char l2[32];
+    if (std::isnan(p.l2)) std::snprintf(l2, sizeof l2, "NaN");  // printf gives "-nan" for some
+    else std::snprintf(l2, sizeof l2, "%.4e", p.l2);
+    std::printf("%-16s %-12s %9ld %10.3f %12s  %s\n", p.scheme.c_str(), p.resolution.c_str(), p.particles,
+                p.wall_seconds, l2, p.status.c_str());
     if (p.status == "ok" && p.l2 > 0) lo = std::min(lo, p.l2), hi = std::max(hi, p.l2);
   }
+  std::size_t finished = 0;
+  for (const auto& p : pts) finished += p.status == "ok";
+  if (!not_finite.empty() && hi > 0)
+    std::fprintf(stderr, "arksph: study work-precision: %zu finished run(s) have no finite error (left out); %s\n",
+                 not_finite.size(), not_finite.front().c_str());
   if (hi == 0) {
-    std::fprintf(stderr, "arksph: study work-precision: no run finished\n");
+    if (finished == 0)
+      std::fprintf(stderr, "arksph: study work-precision: no run finished\n");
+    else if (!not_finite.empty())
+      std::fprintf(stderr, "arksph: study work-precision: %zu run(s) finished but none has a finite error: %s\n",
+                   finished, not_finite.front().c_str());
+    else
+      std::fprintf(stderr, "arksph: study work-precision: %zu run(s) finished but none has an error above 0\n", finished);
     return 3;
   }
   const double target = study.target_error > 0 ? study.target_error : std::sqrt(lo * hi);
@@ -326,14 +367,18 @@ int cmd_work_precision_study(const StudyArgs& args) {
     others += (others.empty() ? "" : ", ") + std::string(buf);
     if (t >= 0 && (best_t < 0 || t < best_t)) best_t = t, best = sch.name;
   }
+  // What the line below measures: the target and how each scheme's time to it is found.
+  std::printf("target: L2 error %.3g (%s); a scheme's time to reach it is interpolated log-log between the wall "
+              "times of its two resolutions around it\n",
+              target, study.target_error > 0 ? "study.target_error"
+                                              : "no study.target_error: the geometric mean of the smallest and "
+                                                "largest L2 error of the finished runs");
   if (best_t < 0)
     std::printf("soonest to L2 error %.3g: no scheme reaches it (%s)\n", target, others.c_str());
   else
     std::printf("soonest to L2 error %.3g: %s, %.3g s (%s)\n", target, best.c_str(), best_t, others.c_str());
   std::printf("results: %s\n", csv.c_str());
-  std::string title = study.title.empty() ? fs::path(study.source).stem().string() : study.title;
-  for (char& c : title)
-    if (c == '\'') c = ' ';
+  const std::string title = study.title.empty() ? fs::path(study.source).stem().string() : study.title;
   plot(csv, (fs::path(study.output) / "work_precision.png").string(), target, title);
   std::fflush(stdout);
   return 0;

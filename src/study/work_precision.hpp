@@ -36,7 +36,8 @@
 // Output: <out>/work_precision.csv (scheme, resolution, particles, wall_seconds, steps, rhs_evals,
 // error_l1, error_l2, error_linf, status, run), the runs' folders and batch.csv, and with
 // /usr/bin/python3 + matplotlib <out>/work_precision.png (scripts/plot_work_precision.py).
-// Exit 0; 3 when the reference run failed or no run finished; 2 for a bad study file.
+// Exit 0; 3 when the reference run failed or no run finished with a finite error; 2 for a bad study
+// file or a folder in use; 5 when the output cannot be written. The keys: docs/user-guide.md, "Studies".
 #pragma once
 #include "study/study_args.hpp"
 #include <string>

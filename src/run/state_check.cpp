@@ -9,6 +9,16 @@
 
 namespace arksph {
 
+namespace {
+// A value in a diagnosis: 10 significant digits (a test or a user compares it with t), exponent form
+// when large or small.
+std::string precise(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
+}  // namespace
+
 StateChecker::StateChecker(const Scene& scene, const Model& model)
     : StateChecker(scene, model, model.rhs->max_acceleration()) {}
 
@@ -45,14 +55,14 @@ void StateChecker::check(double t, const double* y, const StateLayout& L, const 
       const bool wall_lo = scene_.sides[2 * k].kind == SideKind::wall;
       const bool wall_hi = scene_.sides[2 * k + 1].kind == SideKind::wall;
       if ((wall_lo && x < scene_.min[k] - margin_) || (wall_hi && x > scene_.max[k] + margin_))
-        fail(a, std::string("escaped through a wall (") + "xy"[k] + " = " + arksph::message_number(x) + ")");
+        fail(a, std::string("escaped through a wall (") + "xy"[k] + " = " + precise(x) + ")");
     }
     if (std::sqrt(s2) > speed_limit_)
-      fail(a, "speed " + arksph::message_number(std::sqrt(s2)) + " exceeds the blow-up bound " + arksph::message_number(speed_limit_) +
+      fail(a, "speed " + precise(std::sqrt(s2)) + " exceeds the blow-up bound " + precise(speed_limit_) +
                   (scene_.blowup_speed > 0 ? " (time.blowup_speed)" : ""));
     if (L.has_density) {
       const double rho = y[L.rho() + a];
-      if (!std::isfinite(rho) || rho <= 0) fail(a, "density " + arksph::message_number(rho) + " is not positive and finite");
+      if (!std::isfinite(rho) || rho <= 0) fail(a, "density " + precise(rho) + " is not positive and finite");
     }
   }
 }

@@ -7,6 +7,8 @@
 #
 #   ARKSPH_PV_DIR   where the modules are unpacked (default: $HOME/.cache/arksph/python3-paraview)
 #   -q              quiet: print nothing but the final line
+#   --check         install nothing: exit 0 (printing the PYTHONPATH) when everything is in place,
+#                   1 otherwise
 #
 # The last line printed is the PYTHONPATH to use with pvbatch, e.g.
 #   PYTHONPATH=$(scripts/install-paraview.sh -q | tail -n 1) xvfb-run -a pvbatch script.py
@@ -15,6 +17,16 @@ set -eu
 
 QUIET=0
 if [ "${1:-}" = "-q" ] || [ "${1:-}" = "--quiet" ]; then QUIET=1; fi
+if [ "${1:-}" = "--check" ]; then
+  PV_DIR="${ARKSPH_PV_DIR:-${HOME:-/root}/.cache/arksph/python3-paraview}"
+  for p in paraview xvfb xauth; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || exit 1
+  done
+  [ -f "$PV_DIR/.arksph-python3-paraview-version" ] &&
+    [ "$(cat "$PV_DIR/.arksph-python3-paraview-version")" = "$(dpkg-query -W -f='${Version}' paraview)" ] || exit 1
+  echo "$PV_DIR/usr/lib/python3/dist-packages"
+  exit 0
+fi
 say() { if [ "$QUIET" -eq 0 ]; then echo "install-paraview: $*" >&2; fi; }
 
 PV_DIR="${ARKSPH_PV_DIR:-${HOME:-/root}/.cache/arksph/python3-paraview}"

@@ -1,11 +1,24 @@
 #!/bin/sh
 # Runs ParaView's pvbatch headless with its Python modules on the path:
 #   scripts/pvbatch.sh paraview/render.py RUN_DIR --field speed --times 0 1 5 --out pics/
-# Installs what is missing first (scripts/install-paraview.sh, quietly; a no-op once done) and
-# runs pvbatch under xvfb-run, since Debian's ParaView aborts without an X server.
+# under xvfb-run, since Debian's ParaView aborts without an X server. ParaView itself (about 40
+# Debian packages, 1-2 minutes) is installed only with consent: run scripts/install-paraview.sh
+# first, or give --install as the first argument (or ARKSPH_INSTALL_PARAVIEW=1); without it a
+# missing ParaView is named and nothing is installed (exit 2).
 set -eu
 HERE="$(cd "$(dirname "$0")" && pwd)"
-SITE="$("$HERE/install-paraview.sh" -q | tail -n 1)"
+INSTALL="${ARKSPH_INSTALL_PARAVIEW:-0}"
+if [ "${1:-}" = "--install" ]; then INSTALL=1; shift; fi
+if ! SITE="$("$HERE/install-paraview.sh" --check)"; then
+  if [ "$INSTALL" != "1" ]; then
+    echo "pvbatch.sh: ParaView (paraview, xvfb, xauth and its Python modules) is not installed; install it with" \
+      "scripts/install-paraview.sh (about 40 Debian packages, uses sudo when not root), or run" \
+      "scripts/pvbatch.sh --install ... to install and render" >&2
+    exit 2
+  fi
+  echo "pvbatch.sh: installing ParaView (scripts/install-paraview.sh; about 40 Debian packages, 1-2 minutes the first time)" >&2
+  SITE="$("$HERE/install-paraview.sh" -q | tail -n 1)"
+fi
 PYTHONPATH="$SITE${PYTHONPATH:+:$PYTHONPATH}"
 export PYTHONPATH
 # Start the free-display search at a number of our own, not at 99 for everyone: concurrent

@@ -6,6 +6,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "app/study_commands.hpp"
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
+#include "io/input_file.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_reader.hpp"
 #ifdef ARKSPH_WITH_MPI
@@ -191,10 +193,15 @@ int cmd_run(int argc, char** argv) {
     std::printf("arksph: restart from %s at t = %.17g (step %ld)\n", restart_path.c_str(), checkpoint.time,
                 checkpoint.steps);
   }
+  // The scene's warnings: once, from rank 0 of a decomposed run (every rank reads the same scene).
+  std::ostringstream other_ranks_warnings;
+  std::ostream& warnings = g_quiet_rank ? static_cast<std::ostream&>(other_ranks_warnings) : std::cerr;
   const arksph::Scene scene =
-      !restart_path.empty() ? arksph::read_scene_text(checkpoint.scene_toml, restart_path + " [scene_toml]", sets)
-      : scene_path.empty()  ? arksph::read_scene_text(arksph::default_scene_toml(), "<embedded default>", sets)
-                            : arksph::read_scene_file(scene_path, sets);
+      !restart_path.empty()
+          ? arksph::read_scene_text(checkpoint.scene_toml, restart_path + " [scene_toml]", sets, warnings)
+      : scene_path.empty()
+          ? arksph::read_scene_text(arksph::default_scene_toml(), "<embedded default>", sets, warnings)
+          : arksph::read_scene_text(arksph::read_input_file(scene_path, "scene"), scene_path, sets, warnings);
   const arksph::RunResult r = run_scene(scene, options);
   if (g_quiet_rank) return r.exit_code;
   if (r.interrupted) {

@@ -206,7 +206,7 @@ std::vector<Group> general_keys() {
       {{integer("method.reorder_every", 100).in(at_least(0))
             .doc("re-sort the particles by cell at t = 0 and every this many steps (0: never)")
             .to(&Scene::reorder_every),
-        number("time.end", 1.0).required().in(above(0)).unit("s").doc("final simulated time").to(&Scene::end)},
+        number("time.end", 1.0).required().in(above(0)).unit("s").doc("final simulated time (at least 1e-150)").to(&Scene::end)},
        ""},
       {steady_state_params(), ""},
       {time_params(), "time integration"},

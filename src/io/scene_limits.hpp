@@ -19,6 +19,8 @@ namespace arksph {
 // Frames (time.end / output.every) or checkpoints (time.end / output.checkpoint_every) a run may
 // schedule at most.
 inline constexpr double kMaxScheduledWrites = 100000;
+// The smallest time.end: the square of a smaller time underflows a double.
+inline constexpr double kMinEndTime = 1e-150;
 
 void check_scene_limits(const std::map<std::string, scene_schema::Section>& sections, const Scene& s);
 

@@ -59,8 +59,10 @@ const std::vector<Param>& projection_params() {
           .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order; "
                "orthogonal: as constrained, with an idempotent (orthogonal) projection on a coarse pressure space (docs/methods/isph.md)")
           .to(&Scene::projection),
-      number("method.orthogonal_spacing", 3.0).in(at_least(1))
-          .doc("orthogonal projection: spacing of the pressure's B-spline nodes over fluid.spacing (coarser: fewer constraints, better conditioned)")
+      number("method.orthogonal_spacing", 3.0).in(at_least(1.5))
+          .doc("orthogonal projection: spacing of the pressure's B-spline nodes over fluid.spacing (coarser: fewer "
+               "constraints, better conditioned; at 1 the nodes resolve the particles' odd-even modes and K_c "
+               "turns singular within a few steps of the cavity)")
           .to(&Scene::orthogonal_spacing),
       number("method.orthogonal_relaxation", 0.1).in(at_least(0))
           .doc("orthogonal projection: beta of its relaxation rate alpha = beta U/h (as method.constraint_relaxation; smaller, because the coarse divergence of a smooth flow on disordered particles is not zero, and relaxing it damps the flow)")

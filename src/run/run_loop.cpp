@@ -68,6 +68,7 @@ RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, double prog
         const StepStats st = run.integrator().stats();
         dt_max = std::max(dt_max, st.last_step);
         Verdict v = step_size_verdict(scene, t, st.last_step, tiny_steps);
+        if (v.code) v.message += run.failure_location(t);
         v = run.reflect_and_check(t, v);
         v = run.agree_after_step(t, budget_and_signals(scene, t, st.steps, v));
         if (v.code) {

@@ -68,6 +68,9 @@ class RunStrategy {
   virtual std::string checkpoint_now(double t, int frame) = 0;
   virtual std::string checkpoint_path() const = 0;
 
+  // Where the flow is most violent at t (run/failure_diagnosis.hpp), appended to the message of a
+  // step-size failure; "" where that is not known without a collective (ranks).
+  virtual std::string failure_location(double) { return ""; }
   // The verdict after ARKODE gave up at or after t, the time of the last accepted step (the same on
   // every rank).
   virtual Verdict numerical_failure(double t, const std::string& what) = 0;

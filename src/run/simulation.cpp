@@ -107,9 +107,10 @@ class LocalRun final : public RunStrategy {
   }
   std::string checkpoint_path() const override { return checkpoints_->path(); }
   // ARKODE gave up: where the flow was most violent at the last accepted state.
-  Verdict numerical_failure(double t, const std::string& what) override {
-    if (!stepper_.integrator) return {3, what};  // before the first step
-    return {3, what + failure_diagnosis(*model_.rhs, model_.particles, t, stepper_.integrator->state())};
+  Verdict numerical_failure(double t, const std::string& what) override { return {3, what + failure_location(t)}; }
+  std::string failure_location(double t) override {
+    if (!stepper_.integrator) return "";  // before the first step
+    return failure_diagnosis(*model_.rhs, model_.particles, t, stepper_.integrator->state());
   }
   Verdict out_of_memory(double t) override {
     return {6, "out of memory at t = " + arksph::message_number(t) + ": an allocation failed while " + activity()};

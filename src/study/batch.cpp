@@ -148,13 +148,21 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
                              : static_cast<int>(std::thread::hardware_concurrency()) / ranks.local_size;
   if (jobs < 1) jobs = 1;
 
-  // Every run's scene must read: a bad value is a bad sweep (exit 2) before anything runs.
-  for (const auto& run : sw.runs) {
+  // Every run's scene must read: a bad value is a bad sweep (exit 2) before anything runs. The scene
+  // file is read once; a long check says how far it got every few seconds.
+  const std::string scene_text = read_input_file(sw.scene, "scene");
+  auto reported = clock::now();
+  for (std::size_t k = 0; k < sw.runs.size(); ++k) {
+    const auto& run = sw.runs[k];
     std::ostringstream warnings;
     try {
-      read_scene_text(read_input_file(sw.scene, "scene"), sw.scene, run.sets, warnings);
+      read_scene_text(scene_text, sw.scene, run.sets, warnings);
     } catch (const InputError& e) {
       throw InputError(sw.source + ": run " + run.name + ": " + e.what());
+    }
+    if (!opt.quiet && ranks.rank == 0 && std::chrono::duration<double>(clock::now() - reported).count() >= 5) {
+      reported = clock::now();
+      std::fprintf(stderr, "batch: checked the scenes of %zu of %zu runs\n", k + 1, sw.runs.size());
     }
   }
   std::error_code ec;

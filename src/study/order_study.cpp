@@ -312,7 +312,10 @@ OrderStudy read_order_study(const std::string& path, const std::vector<std::stri
   }
   if (s.scene.empty()) throw bad("study.scene", "missing (the scene file)");
   if (fs::path(s.scene).is_relative()) s.scene = (fs::path(path).parent_path() / s.scene).lexically_normal().string();
-  if (!fs::is_regular_file(s.scene)) throw bad("study.scene", s.scene + ": no such file");
+  if (!fs::is_regular_file(s.scene))
+    throw bad("study.scene", s.scene + (fs::is_directory(s.scene) ? ": is a directory, not a scene file"
+                                        : fs::exists(s.scene)     ? ": not a regular file"
+                                                                  : ": no such file"));
   if (s.tables.empty()) throw bad("study.tables", "missing (a list of ARKODE table names, or study.imex_pairs)");
   const auto known = erk_table_names();
   const auto check_table = [&](const std::string& key, const std::string& t) {

@@ -155,7 +155,9 @@ Sweep read_sweep_text(const std::string& text, const std::string& source) {
   if (sw.scene.empty()) throw bad("sweep.scene", "missing (the base scene file)");
   const std::filesystem::path base = std::filesystem::path(source).parent_path();
   if (std::filesystem::path(sw.scene).is_relative()) sw.scene = (base / sw.scene).lexically_normal().string();
-  if (!std::filesystem::is_regular_file(sw.scene)) throw bad("sweep.scene", sw.scene + ": no such file");
+  if (!std::filesystem::is_regular_file(sw.scene))
+    throw bad("sweep.scene", sw.scene + (std::filesystem::is_directory(sw.scene) ? ": is a directory, not a scene file"
+                                         : std::filesystem::exists(sw.scene) ? ": not a regular file" : ": no such file"));
   if (sw.output.empty()) sw.output = "runs/" + std::filesystem::path(source).stem().string();
 
   if (auto* vary = root["vary"].node()) {

@@ -143,7 +143,10 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path, const std:
   }
   if (s.scene.empty()) throw bad("study.scene", "missing (the scene file)");
   if (fs::path(s.scene).is_relative()) s.scene = (fs::path(path).parent_path() / s.scene).lexically_normal().string();
-  if (!fs::is_regular_file(s.scene)) throw bad("study.scene", s.scene + ": no such file");
+  if (!fs::is_regular_file(s.scene))
+    throw bad("study.scene", s.scene + (fs::is_directory(s.scene) ? ": is a directory, not a scene file"
+                                        : fs::exists(s.scene)     ? ": not a regular file"
+                                                                  : ": no such file"));
   if (s.reference != "analytic" && s.reference != "run" && s.reference != "ghia")
     throw bad("study.reference", "'" + s.reference + "': expected analytic, run or ghia");
   if (s.reference == "analytic") {

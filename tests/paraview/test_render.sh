@@ -1,6 +1,6 @@
 #!/bin/sh
 # End-to-end ParaView check, headless: a short run of the real binary, rendered by the real
-# pvbatch through scripts/pvbatch.sh (which installs ParaView first when it is missing).
+# pvbatch through scripts/pvbatch.sh --install (which installs ParaView first when it is missing).
 #   tests/paraview/test_render.sh path/to/arksph
 # Checks: every frame line printed by paraview/render.py lists the point arrays velocity, pressure,
 # density, mass, id, phase and 900 points; every PNG exists and is not blank (more than 2 colours,
@@ -43,7 +43,7 @@ for f in $FIELDS; do
   # One retry, only when the X server aborted pvbatch while it opened its window (seen once under
   # ctest -j2 load: SIGABRT in vtkXOpenGLRenderWindow::CreateAWindow); any other failure counts.
   render() {
-    "$ROOT/scripts/pvbatch.sh" "$ROOT/paraview/render.py" "$RUN" --field "$f" --times 0 0.1 \
+    "$ROOT/scripts/pvbatch.sh" --install "$ROOT/paraview/render.py" "$RUN" --field "$f" --times 0 0.1 \
       --size 400 400 --out "$PICS" >"$TMP/render_$f.out" 2>"$TMP/render_$f.err"
   }
   ok=0

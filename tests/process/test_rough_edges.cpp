@@ -299,13 +299,15 @@ TEST_CASE("rough edges: item 26, an orthogonal-projection run is labelled orthog
   CHECK_FALSE(says(o.out, "constrained"));
 }
 
-TEST_CASE("rough edges: items 27, 30, values the reference used to admit and that fail are refused, named") {
+TEST_CASE("rough edges: items 27, 30, 31, 35, values the reference used to admit and that fail are refused, named") {
   const Scratch s("admitted_values");
   const struct {
     const char* set;
     const char* key;
   } values[] = {{"method.ppe_tolerance=1e-300", "method.ppe_tolerance"},
-                {"method.h_over_dx=0.5", "method.h_over_dx"}};
+                {"method.h_over_dx=0.5", "method.h_over_dx"},
+                {"method.projection=orthogonal --set method.orthogonal_spacing=1", "method.orthogonal_spacing"},
+                {"time.end=1e-300", "time.end"}};
   for (const auto& v : values) {
     CAPTURE(v.set);
     const RunOutcome o = s.arksph("run " + s.scene + " --quiet --out " + s.out + " --set method.scheme=isph --set " + v.set);
@@ -313,4 +315,134 @@ TEST_CASE("rough edges: items 27, 30, values the reference used to admit and tha
     CHECK(lines_of(o.err) == 1);
     CHECK(says(o.err, v.key));
   }
+}
+
+TEST_CASE("rough edges: item 36, a solver failure names where: the particle, its position and the quantity") {
+  const Scratch s("failure_location");
+  // The default cavity with nu = 1e6 under IMEX: ARKODE's error test fails (ARK_ERR_FAILURE).
+  const RunOutcome imex = s.arksph("run --quiet --out " + s.out +
+                                   " --set time.end=0.01 --set fluid.viscosity=1e6 --set time.imex=true");
+  CAPTURE(imex.err);
+  CHECK(imex.code == 3);
+  CHECK(lines_of(imex.err) == 1);
+  CHECK(says(imex.err, "ARK_ERR_FAILURE"));
+  CHECK(says(imex.err, "the largest acceleration is "));
+  CHECK(says(imex.err, "(particle id "));
+  // A body force of 1e300: the adaptive step underflows.
+  const RunOutcome force = s.arksph("run " + s.scene + " --quiet --out " + s.out + " --set 'fluid.body_force=[1e300, 0]'");
+  CAPTURE(force.err);
+  CHECK(force.code == 3);
+  CHECK(says(force.err, "underflowed"));
+  CHECK(says(force.err, "the largest acceleration is 1e+300 (particle id "));
+}
+
+TEST_CASE("rough edges: item 10, a fixed step solves the IMEX stages below its truncation error and says so") {
+  const Scratch s("imex_fixed_step");
+  const RunOutcome o = s.arksph("run --quiet --out " + s.out +
+                                " --set time.end=0.002 --set time.imex=true --set time.dt=0.001");
+  REQUIRE(o.code == 0);
+  CHECK(says(o.out, "fixed dt 0.001 (implicit stages solved to rtol 1e-10, atol 1e-12)"));
+}
+
+TEST_CASE("rough edges: item 32, SIGTERM to a batch reaches its running child, which checkpoints, exit 143") {
+  const Scratch s("batch_signal");
+  // One run long enough to be caught running: the default cavity to t = 50 (minutes of work).
+  const std::string sweep = s.dir / "sweep.toml";
+  std::ofstream(s.dir / "cavity.toml") << s.arksph("default-scene").out;
+  std::ofstream(sweep) << "[sweep]\nscene = \"cavity.toml\"\nset = [\"time.end=50\"]\n[[vary]]\n"
+                          "key = \"fluid.viscosity\"\nvalues = [0.01]\n";
+  const std::string bin = arksph::testing::arksph_binary();
+  // Start the batch in the background, give its child time to start stepping, then SIGTERM the batch.
+  const RunOutcome o = run_command_captured(
+      "sh -c '" + bin + " batch " + sweep + " --out " + s.out + " & b=$!; sleep 4; kill -TERM $b; wait $b'",
+      s.dir.dir.string());
+  CAPTURE(o.err);
+  CHECK(o.code == 143);
+  CHECK(says(o.err, "SIGTERM"));
+  bool checkpoint = false;
+  for (const auto& e : fs::recursive_directory_iterator(s.out))
+    checkpoint = checkpoint || e.path().filename() == "checkpoint.h5";
+  CHECK(checkpoint);  // the child wrote its checkpoint when the signal reached it
+}
+
+TEST_CASE("rough edges: item 1, the tour's MPI wrapper runs as root and with more ranks than cores") {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
+    MESSAGE("no mpirun on this machine: nothing to check");
+    return;
+  }
+  const Scratch s("mpirun_wrapper");
+  const std::string wrapper = std::string(ARKSPH_SOURCE_DIR) + "/scripts/mpirun.sh";
+  const RunOutcome o = run_command_captured(wrapper + " -n 3 " + arksph::testing::arksph_binary() + " run " + s.scene +
+                                                " --quiet --out " + s.out,
+                                            s.dir.dir.string());
+  CAPTURE(o.err);
+  REQUIRE(o.code == 0);
+  const arksph::JsonValue j = arksph::read_json_file(s.out + "/summary.json");
+  const arksph::JsonValue* mpi = j.find("mpi");
+  REQUIRE(mpi != nullptr);
+  const arksph::JsonValue* ranks = mpi->find("ranks");
+  REQUIRE(ranks != nullptr);
+  CHECK(ranks->number == 3);
+}
+
+TEST_CASE("rough edges: item 2, rendering without ParaView names the install step and installs nothing") {
+  const Scratch s("pvbatch_consent");
+  const std::string modules = s.dir / "paraview_modules";  // an empty cache: the modules are missing
+  const RunOutcome o = run_command_captured("env ARKSPH_PV_DIR=" + modules + " " + ARKSPH_SOURCE_DIR +
+                                                "/scripts/pvbatch.sh paraview/render.py " + s.out,
+                                            s.dir.dir.string());
+  CHECK(o.code == 2);
+  CHECK(says(o.err, "is not installed"));
+  CHECK(says(o.err, "scripts/install-paraview.sh"));
+  CHECK_FALSE(fs::exists(modules));  // nothing downloaded or unpacked
+}
+
+TEST_CASE("rough edges: item 9, the README's tour gives runnable commands and no figures that drift") {
+  const std::string readme = slurp(std::string(ARKSPH_SOURCE_DIR) + "/README.md");
+  REQUIRE_FALSE(readme.empty());
+  CHECK_FALSE(says(readme, "cut -c1-160"));                       // cut off every result column
+  CHECK(says(readme, "--set method.scheme=isph --out runs/tour_isph"));  // "switch the scheme" has a command
+  CHECK(says(readme, "into `runs/order_wcsph/`"));                // the order study's folder is named
+  CHECK(says(readme, "Against PySPH"));                           // the PySPH comparison, linked
+  CHECK(says(readme, "bench/RESULTS.md#cavity-re--100-50--50-to-t--10-against-pysph"));
+  CHECK_FALSE(says(readme, "1.10, 1.92, 3.05"));                  // measured orders live in the case READMEs
+  CHECK_FALSE(says(readme, "0.013\n(isph), 0.0089"));
+  CHECK_FALSE(says(readme, "\nOMP_NUM_THREADS=1 mpirun"));        // as root mpirun refuses without a flag
+}
+
+TEST_CASE("rough edges: items 23, 37, options that do not apply to the scene are refused, named") {
+  const Scratch s("not_applicable");
+  const std::string line = s.dir / "line.toml";
+  std::ofstream(line) << "[scene]\ndimension = 1\n[domain]\nmin = [0.0]\nmax = [1.0]\n[fluid]\nspacing = 0.1\n"
+                         "[time]\nend = 0.01\n";
+  const struct {
+    std::string args, key;
+  } cases[] = {
+      // The default cavity stretched to 2 x 1: Ghia's points would not be its centrelines.
+      {"run --quiet --out " + s.out + " --set 'domain.max=[2.0, 1.0]'", "metrics.ghia_re"},
+      {"run " + line + " --quiet --out " + s.out + " --set boundary.wall_velocity=linear", "boundary.wall_velocity"},
+  };
+  for (const auto& c : cases) {
+    CAPTURE(c.args);
+    const RunOutcome o = s.arksph(c.args);
+    CHECK(o.code == 2);
+    CHECK(lines_of(o.err) == 1);
+    CHECK(says(o.err, c.key));
+  }
+}
+
+TEST_CASE("rough edges: item 37, batch messages name what is wrong") {
+  const Scratch s("batch_messages");
+  // A sweep whose scene is a folder.
+  const std::string sweep = s.dir / "sweep.toml";
+  std::ofstream(sweep) << "[sweep]\nscene = \".\"\n[[vary]]\nkey = \"fluid.viscosity\"\nvalues = [0.01]\n";
+  const RunOutcome folder = s.arksph("batch " + sweep + " --out " + s.out);
+  CHECK(folder.code == 2);
+  CHECK(says(folder.err, "is a directory"));
+  // --set output.directory: the batch chooses the runs' folders; the message says to use --out.
+  std::ofstream(sweep) << "[sweep]\nscene = \"S.toml\"\n[[vary]]\nkey = \"fluid.viscosity\"\nvalues = [0.01]\n";
+  const RunOutcome directory = s.arksph("batch " + sweep + " --out " + s.out + " --set output.directory=elsewhere");
+  CHECK(directory.code == 2);
+  CHECK(says(directory.err, "choose that folder with --out DIR"));
+  CHECK_FALSE(says(directory.err, "is varied by"));
 }

@@ -26,7 +26,7 @@ double bspline_slope(double t) {
 }  // namespace
 
 CoarsePressureSpace::CoarsePressureSpace(const Scene& scene, double ratio) {
-  if (scene.dimension != 2) throw InputError("method.projection = \"orthogonal\": 2D scenes only");
+  if (scene.dimension != 2) throw InputError(scene.source + ": method.projection = \"orthogonal\": 2D scenes only");
   const bool periodic[2] = {scene.sides[0].kind == SideKind::periodic, scene.sides[2].kind == SideKind::periodic};
   nodes_ = 1;
   for (int k = 0; k < 2; ++k) {
@@ -38,7 +38,7 @@ CoarsePressureSpace::CoarsePressureSpace(const Scene& scene, double ratio) {
     a.spacing = a.length / m;
     a.nodes = a.periodic ? m : m + 1;
     if (m < 4)
-      throw InputError("method.orthogonal_spacing: at least 4 pressure node spacings across the box are needed (got " +
+      throw InputError(scene.source + ": method.orthogonal_spacing: at least 4 pressure node spacings across the box are needed (got " +
                        std::to_string(m) + ")");
     nodes_ *= static_cast<std::size_t>(a.nodes);
   }
@@ -114,7 +114,9 @@ void CoarsePressureSpace::assemble(const FluidFields& f, const DivergenceOperato
     k += Eigen::MatrixXd(b * Eigen::SparseMatrix<double>(b.transpose()));
   }
   factor_.compute(k);
-  if (factor_.info() != Eigen::Success) throw NumericalFailure("orthogonal projection: K_c could not be factorised");
+  if (factor_.info() != Eigen::Success)
+    throw NumericalFailure("orthogonal projection: K_c could not be factorised (singular at this particle "
+                           "distribution; a larger method.orthogonal_spacing conditions it better)");
 }
 
 Eigen::VectorXd CoarsePressureSpace::restrict_weighted(const FluidFields& f, const double* s) const {

@@ -446,3 +446,24 @@ TEST_CASE("rough edges: item 37, batch messages name what is wrong") {
   CHECK(says(directory.err, "choose that folder with --out DIR"));
   CHECK_FALSE(says(directory.err, "is varied by"));
 }
+
+TEST_CASE("rough edges: item 33, SIGTERM to mpirun: the ranks checkpoint and summary.json says interrupted") {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
+    MESSAGE("no mpirun on this machine: nothing to check");
+    return;
+  }
+  const Scratch s("mpirun_signal");
+  const std::string wrapper = std::string(ARKSPH_SOURCE_DIR) + "/scripts/mpirun.sh";
+  // The default cavity to t = 50 on 2 ranks (minutes of work), stopped after a few seconds.
+  const RunOutcome o = run_command_captured("sh -c '" + wrapper + " -n 2 " + arksph::testing::arksph_binary() +
+                                                " run --quiet --out " + s.out +
+                                                " --set time.end=50 & m=$!; sleep 6; kill -TERM $m; wait $m'",
+                                            s.dir.dir.string());
+  CAPTURE(o.err);
+  CHECK(says(o.err, "interrupted by SIGTERM"));
+  CHECK(fs::exists(s.out + "/checkpoint.h5"));
+  const arksph::JsonValue j = arksph::read_json_file(s.out + "/summary.json");
+  const arksph::JsonValue* status = j.find("status");
+  REQUIRE(status != nullptr);
+  CHECK(status->text == "interrupted");  // mpirun's own exit code is Open MPI's (docs/parallel.md)
+}

@@ -467,3 +467,16 @@ TEST_CASE("rough edges: item 33, SIGTERM to mpirun: the ranks checkpoint and sum
   REQUIRE(status != nullptr);
   CHECK(status->text == "interrupted");  // mpirun's own exit code is Open MPI's (docs/parallel.md)
 }
+
+TEST_CASE("rough edges: item 37, refusals on restart name the checkpoint they read the scene from") {
+  const Scratch s("restart_refusals");
+  REQUIRE(s.arksph("run --quiet --out " + s.out + " --set time.end=0.005").code == 0);
+  const std::string checkpoint = s.out + "/checkpoint.h5";
+  const RunOutcome o = s.arksph("run --quiet --restart " + checkpoint + " --out " + (s.dir / "continued") +
+                                " --set time.end=0.01 --set method.density_mode=summation");
+  CAPTURE(o.err);
+  CHECK(o.code == 2);
+  CHECK(lines_of(o.err) == 1);
+  CHECK(says(o.err, checkpoint));
+  CHECK(says(o.err, "method.density_mode"));
+}

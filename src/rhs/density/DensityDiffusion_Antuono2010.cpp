@@ -85,7 +85,7 @@ Part<CompressibleTermsFactory> density_diffusion_delta_sph() {
           "hydrostatic part left out",
           [](const Scene& scene, double sound_speed) {
             if (!density_modes().at(scene.density_mode).traits.adds_state("density"))
-              throw InputError("method.density_diffusion: \"delta_sph\" needs method.density_mode = \"continuity\" (got \"" +
+              throw InputError(scene.source + ": method.density_diffusion: \"delta_sph\" needs method.density_mode = \"continuity\" (got \"" +
                                scene.density_mode + "\")");
             std::vector<std::unique_ptr<Term>> terms;
             terms.push_back(make_density_diffusion(scene, sound_speed));

@@ -73,6 +73,8 @@ def main():
     ax[1].set_ylabel("v on y = 0.5")
     ax[1].legend(fontsize=6, loc="lower left")
     fig.tight_layout()
+    if os.path.dirname(out):
+        os.makedirs(os.path.dirname(out), exist_ok=True)
     fig.savefig(out, dpi=110)
     print(f"wrote {out}")
 

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "projection/poisson/poisson_solver.hpp"
+#include "test_support.hpp"
 
 using namespace arksph;
 
@@ -36,6 +37,10 @@ TEST_CASE("poisson: cg and cg_ic stopping above method.ppe_tolerance throw a num
   const SparseMatrix A = neumann_laplacian(n);
   std::vector<double> b(n, 0.0);
   b[0] = 1.0;
+  // The iterations on a system without a solution may overflow or divide by a vanishing p.Ap on the
+  // way to the iteration limit: the floating-point traps of ARKSPH_FP_TRAPS=1 stay off here, what is
+  // checked is the report at the end.
+  const testing::FpTrapsOff traps_off;
   for (const char* name : {"cg", "cg_ic"}) {
     CAPTURE(name);
     std::vector<double> p(n, 0.0);

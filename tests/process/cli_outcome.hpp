@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "minimal_scene.hpp"
+
 namespace arksph::testing {
 
 inline std::string arksph_binary() {
@@ -49,18 +51,5 @@ inline CliOutcome run_cli(const std::string& args, const std::string& prefix = "
   std::filesystem::remove(err_file);
   return o;
 }
-
-// The minimal scene of the hostile-input tests: 10 x 10 particles in a resting box without a lid,
-// 0.01 s; particle ids are the lattice order, row by row from (0.05, 0.05), so the particle at
-// (0.95, 0.95) has id 99.
-inline constexpr const char* kMinimalScene = R"(
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-[time]
-end = 0.01
-)";
 
 }  // namespace arksph::testing

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "io/json_reader.hpp"
+#include "minimal_scene.hpp"
 #include "run_arksph.hpp"
 #include "test_support.hpp"
 
@@ -29,15 +30,7 @@ using arksph::testing::slurp;
 namespace {
 
 // 10 x 10 particles at rest in a closed box, 0.01 s: the smallest run that writes every output.
-const char* const kBox = R"(
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[fluid]
-spacing = 0.1
-[time]
-end = 0.01
-)";
+const char* const kBox = arksph::testing::kMinimalScene;
 
 struct Scratch {
   ScratchDir dir;

@@ -85,6 +85,23 @@ int erk_table_order(const std::string& name) {
   return q;
 }
 
+ErkTable erk_table(const std::string& name) {
+  ARKodeButcherTable B = load_table(name);
+  if (!B) throw InputError("unknown ERK table '" + echo_value(name) + "' (arksph list names them under erk_table)");
+  ErkTable t;
+  t.stages = B->stages;
+  t.order = B->q;
+  t.embedded_order = B->p;
+  for (int i = 0; i < B->stages; ++i) {
+    t.A.emplace_back(B->A[i], B->A[i] + B->stages);
+    t.b.push_back(B->b[i]);
+    t.c.push_back(B->c[i]);
+    if (B->d) t.d.push_back(B->d[i]);
+  }
+  ARKodeButcherTable_Free(B);
+  return t;
+}
+
 ErkIntegrator::ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt)
     : ArkodeIntegrator(kErkStep, y0, t0, opt), f_(std::move(f)), post_(opt.postprocess), post_stage_(opt.postprocess_stage) {
   adopt(ERKStepCreate(&ErkIntegrator::rhs_cb, t0, y_, ctx_));

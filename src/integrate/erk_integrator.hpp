@@ -35,6 +35,16 @@ bool erk_table_has_fsal_bug(const std::string& name);
 bool erk_table_has_embedding(const std::string& name);
 int erk_table_order(const std::string& name);
 
+// The coefficients of a table: stage s of the step reads z_s = y + h sum_j A[s][j] k_j at
+// t + c[s] h, the step y + h sum_s b[s] k_s; d is the embedding's weights (empty without one).
+struct ErkTable {
+  int stages = 0, order = 0, embedded_order = 0;
+  std::vector<std::vector<double>> A;
+  std::vector<double> b, c, d;
+};
+// The table of that name (InputError for an unknown name).
+ErkTable erk_table(const std::string& name);
+
 class ErkIntegrator final : public ArkodeIntegrator {
  public:
   ErkIntegrator(RhsFunction f, const std::vector<double>& y0, double t0, const ErkOptions& opt);

@@ -1,0 +1,199 @@
+"""The particle ODE of an arksph scene as a Python callable: y' = f(t, y)."""
+import json
+import math
+import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from . import _arksph
+from .readers import frames, read_frame
+
+
+def binary():
+    """The arksph executable: $ARKSPH_BINARY, else the one of this build (build/arksph beside
+    build/python), else arksph on the PATH."""
+    if os.environ.get("ARKSPH_BINARY"):
+        return os.environ["ARKSPH_BINARY"]
+    built = Path(__file__).resolve().parents[2] / "arksph"
+    if built.is_file():
+        return str(built)
+    found = shutil.which("arksph")
+    if not found:
+        raise FileNotFoundError("no arksph executable: set ARKSPH_BINARY or build with ./scripts/build.sh")
+    return found
+
+
+class RunError(RuntimeError):
+    """`arksph run` ended with a non-zero exit code (README.md, "Exit codes"): .code, .message."""
+
+    def __init__(self, code, message):
+        super().__init__(f"arksph run exited {code}: {message}")
+        self.code = code
+        self.message = message
+
+
+def toml_value(value):
+    """A Python value as the TOML text of a --set override (bool, int, float, str, list)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    if isinstance(value, str):
+        return json.dumps(value)  # a JSON string is a TOML basic string
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(toml_value(v) for v in value) + "]"
+    raise TypeError(f"a scene value must be a bool, number, string or list, not {type(value).__name__}")
+
+
+def overrides(settings):
+    """{"time.end": 0.5} -> ["time.end=0.5"], the form of `arksph run --set`."""
+    return [f"{key}={toml_value(value)}" for key, value in (settings or {}).items()]
+
+
+class Model:
+    """The semi-discrete particle system of a scene, set up as `arksph run` sets it up.
+
+    Model("scene.toml", set={"fluid.spacing": 0.02})   a scene file with overrides
+    Model()                                             the embedded default scene
+    Model(text="...")                                   a scene given as TOML text
+
+    The state y is a flat float64 array of blocks of n values each, one value per particle in the
+    order of increasing particle id (`ids`): positions x (and y), velocities u (and v), then the
+    density rho when it is a state variable (WCSPH's continuity equation) and the specific energy
+    when the equation of state needs it. `layout` maps each block's name to its slice of y.
+    """
+
+    def __init__(self, scene=None, set=None, text=None):
+        path = os.fspath(scene) if scene is not None else ""
+        self._ode = _arksph.ParticleOde(path, text or "", overrides(set))
+        self.n = self._ode.n
+        self.dim = self._ode.dim
+        self.layout = self._ode.layout
+        self.ids = self._ode.ids
+        self.h = self._ode.h
+        self.scheme = self._ode.scheme
+        self.end_time = self._ode.end_time
+
+    @property
+    def y0(self):
+        """The initial state (a new array each time): the state the first step of `arksph run` starts from."""
+        return self._ode.y0
+
+    @property
+    def scene_toml(self):
+        """The scene with every key resolved, as TOML text (what the run's summary records)."""
+        return self._ode.scene_toml
+
+    @property
+    def evaluations(self):
+        """The number of evaluations of f so far."""
+        return self._ode.evaluations
+
+    def rhs(self, t, y):
+        """dy/dt = f(t, y); for the constrained projection f holds the pressure that keeps div u = 0."""
+        return self._ode.rhs(float(t), y)
+
+    def project(self, t, y, t_start, y_start):
+        """C&R's projection after a step from (t_start, y_start) to (t, y): the projected state (a new
+        array). For method.scheme = "isph" / "isph-gpps" with method.projection = "cr" only."""
+        return self._ode.project(float(t), y, float(t_start), y_start)
+
+    @property
+    def has_projection(self):
+        """Whether the scheme projects the velocity (C&R's projection after each step, or constrained in f)."""
+        return self._ode.has_projection
+
+    @property
+    def constrained(self):
+        """Whether the projection is inside f (method.projection = "constrained")."""
+        return self._ode.constrained
+
+    def explicit_rhs(self, t, y):
+        """f_E of the IMEX split (time.imex): everything but the viscous acceleration."""
+        return self._ode.explicit_rhs(float(t), y)
+
+    def implicit_rhs(self, t, y):
+        """f_I of the IMEX split: the viscous acceleration (velocity blocks; zero elsewhere)."""
+        return self._ode.implicit_rhs(float(t), y)
+
+    def implicit_jvp(self, t, y, v):
+        """J v with J = df_I/dy at y, positions and densities frozen: exact for v in the velocity blocks."""
+        return self._ode.implicit_jvp(float(t), y, v)
+
+    def stable_step(self, y):
+        """The largest stable step at y (CFL, viscous and force limits) from the fields of the last f."""
+        return self._ode.stable_step(y)
+
+    def run(self, t_end=None, every=None, out=None, restart=False, set=None):
+        """Runs the scene with arksph's own integrator and run loop (`arksph run`: adaptive or fixed
+        step, projection, re-sorting, checkpoints), then yields its frames in time order as
+        (t, y) in this model's layout. `out`: the output folder (a temporary one if None, removed
+        after the last frame); `restart=True` continues the run in `out` from its checkpoint.h5;
+        `set`: further overrides. A failed run raises RunError with the exit code and the message."""
+        settings = dict(set or {})
+        if t_end is not None:
+            settings["time.end"] = float(t_end)
+        if every is not None:
+            settings["output.every"] = float(every)
+        temporary = None if out is not None else tempfile.TemporaryDirectory(prefix="arksph_run_")
+        folder = Path(out if out is not None else temporary.name)
+        try:
+            with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as scene:
+                scene.write(self.scene_toml)
+            command = [binary(), "run", scene.name, "--quiet", "--out", str(folder)]
+            command += ["--restart"] if restart else ["--overwrite"]
+            for s in overrides(settings):
+                command += ["--set", s]
+            done = subprocess.run(command, capture_output=True, text=True)
+            os.unlink(scene.name)
+            if done.returncode != 0:
+                lines = done.stderr.strip().splitlines()
+                raise RunError(done.returncode, lines[-1] if lines else "(no message)")
+            for t, path in frames(folder):
+                self._last = (t, self.state_of_frame(path))
+                yield self._last
+        finally:
+            if temporary is not None:
+                temporary.cleanup()
+
+    def state(self):
+        """(t, y) of the last frame run() yielded."""
+        if getattr(self, "_last", None) is None:
+            raise RuntimeError("no frame yet: iterate over model.run(...) first")
+        return self._last
+
+    def state_of_frame(self, path):
+        """The state y of a frame file (.vtp or .pvtp) of a run of this scene, in this model's layout."""
+        f = read_frame(path)
+        order = np.argsort(f["id"], kind="stable")
+        if not np.array_equal(f["id"][order], self.ids):
+            raise ValueError(f"{path}: its particles are not this model's (ids differ)")
+        blocks = {"x": f["Points"][:, 0], "y": f["Points"][:, 1], "u": f["velocity"][:, 0], "v": f["velocity"][:, 1],
+                  "rho": f["density"]}
+        y = np.empty(self.y0.size)
+        for name, part in self.layout.items():
+            if name not in blocks:
+                raise ValueError(f"{path}: the frames do not hold the block {name!r} of the state")
+            y[part] = blocks[name][order]
+        return y
+
+    def field(self, y, name):
+        """One block of y by its layout name ("x", "y", "u", "v", "rho", "energy"), as a view."""
+        return np.asarray(y)[self.layout[name]]
+
+
+def erk_table(name):
+    """The Butcher table of an ERK method by its time.integrator name, with ARKODE's coefficients:
+    a dict of A (list of rows), b, c, d (the embedding's weights, [] without one), order and
+    embedded_order."""
+    return _arksph.erk_table(name)

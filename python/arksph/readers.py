@@ -84,6 +84,8 @@ def _shaped(path, values, da, n):
 def _read_vtp(path):
     """{name: array} of one .vtp file: the point-data arrays and "Points"."""
     raw = path.read_bytes()
+    if not raw.rstrip().endswith(b"</VTKFile>"):
+        raise _corrupt(path, "it does not end with </VTKFile>")
     marker = raw.find(b"<AppendedData")
     underscore = raw.find(b"_", marker)
     if marker < 0 or underscore < 0:

@@ -236,7 +236,7 @@ class Run:
       frames      sequence of the frames (len, index, slice, iterate); each access reads the file
                   again and nothing is kept, so list(run.frames) holds every frame in memory
       timeseries  timeseries.csv (read_timeseries), None if the folder has none
-      summary     summary.json as a dict, None if the folder has none (a run killed before its end)
+      summary     summary.json as a dict, None if the folder has none
       sort_by_id  whether frame rows are ordered by particle id
 
     frame(i) reads frame i (negative i counts from the end): a dict of the read_frame arrays plus

@@ -8,8 +8,8 @@
     vtkXMLPPolyDataReader's bit for bit, and sorted by id agrees with the one-process run within
     ROUND_OFF (docs/parallel.md: the ranks sum in other orders, round-off of ~1e-15 at t = 0.05);
   - a frame rewritten by VTK uncompressed with UInt32 headers reads the same;
-  - a missing folder, a folder without particles.pvd, a truncated or corrupt .vtp raise one-line
-    FileNotFoundError / ValueError naming the path.
+  - a missing folder, a folder without particles.pvd, a missing piece of a .pvtp, a truncated or
+    corrupt .vtp raise one-line FileNotFoundError / ValueError naming the file.
 
 Environment: ARKSPH_BINARY (default /work/main/build/arksph), PYTHONPATH holding python/ (or the
 build's python/). The VTK comparisons need VTK's Python module (python3-vtk9), the 2-rank run mpirun.
@@ -137,7 +137,8 @@ class OneProcessRun(ReadersTestCase):
         np.testing.assert_allclose(np.asarray(ts["t"]), read_run(self.out).times, rtol=CSV_DIGITS, atol=0)
         self.assertEqual(int(np.asarray(ts["steps"])[0]), 0)
         self.assertGreater(int(np.asarray(ts["steps"])[-1]), 0)
-        self.assertIn("kinetic_energy", list(ts.dtype.names if hasattr(ts.dtype, "names") else ts.columns))
+        columns = list(ts.dtype.names) if isinstance(ts, np.ndarray) else list(ts.columns)  # NumPy or pandas
+        self.assertEqual(columns[:5], ["t", "dt", "steps", "kinetic_energy", "max_speed"])
 
     def test_summary_is_summary_json(self):
         summary = read_run(self.out).summary
@@ -223,6 +224,17 @@ class TwoRankPieces(ReadersTestCase):
     def test_pvtp_equals_vtk(self):
         for t, path in frames(self.two):
             self.assertSameArrays(read_frame(path), vtk_arrays(path, vtkXMLPPolyDataReader()), path.name)
+
+    def test_missing_piece_raises_naming_it(self):
+        index = frames(self.two)[-1][1]
+        lone = Path(self.tmp) / "lone"
+        lone.mkdir(exist_ok=True)
+        shutil.copy(index, lone)
+        piece = index.name.replace(".pvtp", "_r0.vtp")
+        shutil.copy(self.two / piece, lone)
+        with self.assertRaises(FileNotFoundError) as e:
+            read_frame(lone / index.name)
+        self.assertIn(index.name.replace(".pvtp", "_r1.vtp"), str(e.exception))
 
     def test_file_rows_change_order_and_sorting_matches_them_by_id(self):
         raw = read_run(self.two, sort_by_id=False)

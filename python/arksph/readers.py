@@ -50,10 +50,15 @@ def _appended_array(path, raw, start, da, header, compressed, order):
     if dtype is None:
         raise ValueError("%s: array %r has unsupported type %r" % (path, da.get("Name"), da.get("type")))
     word = struct.calcsize(header)
-    pos = start + int(da.get("offset"))
+    offset = da.get("offset", "")
+    if not offset.isdigit():
+        raise struct.error("array %r has no offset" % da.get("Name"))
+    pos = start + int(offset)
     if compressed:
         # [blocks, block size, size of the last block (0: a full block), compressed sizes...]
         nblocks, block, last = struct.unpack_from(order + 3 * header, raw, pos)
+        if pos + (3 + nblocks) * word > len(raw):
+            raise struct.error("array %r: block sizes past the end of the file" % da.get("Name"))
         sizes = struct.unpack_from(order + "%d%s" % (nblocks, header), raw, pos + 3 * word)
         pos += (3 + nblocks) * word
         parts = []

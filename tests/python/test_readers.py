@@ -183,6 +183,9 @@ class OneProcessRun(ReadersTestCase):
         data_start = whole.index(b"<AppendedData")
         flipped = bytearray(whole)
         flipped[data_start + 200] ^= 0xFF  # inside the first array's zlib stream
+        huge = bytearray(whole)  # the first array's block count (UInt64 after the "_") made absurd
+        first = whole.index(b"_", data_start) + 1
+        huge[first:first + 8] = (2 ** 60).to_bytes(8, "little")
         for name, content in [("cut_in_data.vtp", whole[:len(whole) * 2 // 3]),
                               ("cut_in_xml.vtp", whole[:data_start // 2]),
                               ("cut_at_end.vtp", whole[:-40]),
@@ -190,6 +193,7 @@ class OneProcessRun(ReadersTestCase):
                               ("cut_and_closed.vtp", whole[:len(whole) * 2 // 3] + b"\n</AppendedData>\n</VTKFile>\n"),
                               ("hole_in_data.vtp", whole[:data_start + 3000] + whole[data_start + 5000:]),
                               ("flipped.vtp", bytes(flipped)),
+                              ("huge_block_count.vtp", bytes(huge)),
                               ("empty.vtp", b"")]:
             (tmp / name).write_bytes(content)
             with self.assertRaises(ValueError) as e:

@@ -35,6 +35,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import vtp_frames  # noqa: E402  (frames and read_vtp; main() has its own `frames`)
 FOAM = os.path.join(ROOT, "bench", "openfoam_cavity")
 GHIA = os.path.join(ROOT, "bench", "ghia")
 LETTER = {"direct": "A", "two_pass": "B", "violeau": "C", "cleary": "D", "morris": "E"}
@@ -130,24 +132,18 @@ def wendland_c2(q):
 
 
 def last_frame(folder):
-    """Positions and velocities of the last VTP frame (None without vtk or frames)."""
-    frames = sorted(glob.glob(os.path.join(folder, "particles_*.vtp")))
-    try:
-        import vtk
-        from vtk.util.numpy_support import vtk_to_numpy
-    except ImportError:
+    """Positions and velocities of the last frame particles.pvd lists (None without frames)."""
+    if not os.path.exists(os.path.join(folder, "particles.pvd")):
         return None
-    if not frames:
+    listed = vtp_frames.frames(folder)
+    if not listed:
         return None
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(frames[-1])
-    reader.Update()
-    data = reader.GetOutput()
-    return vtk_to_numpy(data.GetPoints().GetData()), vtk_to_numpy(data.GetPointData().GetArray("velocity"))
+    data = vtp_frames.read_vtp(listed[-1][1])
+    return data["Points"], data["velocity"]
 
 
 def last_frame_profiles(folder, n=101):
-    """u(y) on x = 0.5 and v(x) on y = 0.5 from the last VTP frame (None without vtk or frames)."""
+    """u(y) on x = 0.5 and v(x) on y = 0.5 from the last frame (None without frames)."""
     frame = last_frame(folder)
     if frame is None:
         return None

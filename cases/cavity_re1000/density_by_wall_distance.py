@@ -3,18 +3,16 @@
 distance from the nearest wall and per wall, from a VTP frame's `summation_density` array.
 
 usage: density_by_wall_distance.py FRAME.vtp [--dx DX] [--box XMIN YMIN XMAX YMAX]
-Needs VTK's Python module (Debian python3-vtk9, which /usr/bin/python3 has beside libvtk9-dev).
+FRAME may also be a .pvtp index of pieces; read by scripts/vtp_frames.py (no VTK).
 """
 import argparse
+import os
 import sys
 
 import numpy as np
 
-try:
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-except ImportError:
-    sys.exit("density_by_wall_distance.py: needs VTK's Python module (apt-get install python3-vtk9)")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from vtp_frames import read_vtp  # noqa: E402
 
 
 def main():
@@ -23,15 +21,14 @@ def main():
     ap.add_argument("--dx", type=float, default=1 / 60, help="particle spacing (default 1/60)")
     ap.add_argument("--box", type=float, nargs=4, default=[0, 0, 1, 1], metavar=("XMIN", "YMIN", "XMAX", "YMAX"))
     a = ap.parse_args()
-    r = vtk.vtkXMLPolyDataReader()
-    r.SetFileName(a.frame)
-    r.Update()
-    pd = r.GetOutput()
-    arr = pd.GetPointData().GetArray("summation_density") if pd else None
-    if arr is None:
+    try:
+        data = read_vtp(a.frame)
+    except (OSError, ValueError) as e:
+        sys.exit("density_by_wall_distance.py: %s" % e)
+    if "summation_density" not in data:
         sys.exit("density_by_wall_distance.py: %s: no summation_density array" % a.frame)
-    xy = vtk_to_numpy(pd.GetPoints().GetData())[:, :2]
-    rho = vtk_to_numpy(arr)
+    xy = data["Points"][:, :2]
+    rho = data["summation_density"]
     dev = rho - rho.mean()
     x0, y0, x1, y1 = a.box
     dist = {"bottom": xy[:, 1] - y0, "top": y1 - xy[:, 1], "left": xy[:, 0] - x0, "right": x1 - xy[:, 0]}

@@ -3,25 +3,26 @@
 
     steady_replay.py RUN_DIR [RUN_DIR ...] [--window W] [--tolerances T1,T2,...]
 
-For each run folder (particles_*.vtp at output times 0, 1, 2, ...) it takes, per frame, the sample
-that arksph's monitor takes (src/diagnostics/steady_state.hpp): the kinetic energy and the velocities
+For each run folder (the frames its particles.pvd lists, at output times 0, 1, 2, ...) it takes, per
+frame, the sample that arksph's monitor takes (src/diagnostics/steady_state.hpp): the kinetic energy and the velocities
 at Ghia's interior centreline points, interpolated as src/diagnostics/ghia.cpp does (Shepard-normalised
 Wendland C2 with h = 1.3 dx over the fluid particles; velocities over the lid speed 1). It prints the
 first output time at which the change of the means of the two latest windows of W outputs is below
 each tolerance, and the rate every 10 outputs. dx is read from the run's summary.json (derived h / 2).
-Needs python3 with vtk and numpy.
+Needs python3 with numpy; the frames are read by scripts/vtp_frames.py (no VTK).
 """
 import argparse
 import csv
-import glob
 import json
 import os
+import sys
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "scripts"))
+from vtp_frames import frames, read_vtp  # noqa: E402
+
 GHIA = os.path.join(HERE, "..", "..", "..", "bench", "ghia")
 
 
@@ -41,16 +42,10 @@ def samples(run, dx):
         return np.where(q < 2, (1 - q / 2) ** 4 * (2 * q + 1), 0.0)
 
     out = []
-    for path in sorted(glob.glob(os.path.join(run, "particles_*.vtp"))):
-        reader = vtk.vtkXMLPolyDataReader()
-        reader.SetFileName(path)
-        reader.Update()
-        poly = reader.GetOutput()
-        x = vtk_to_numpy(poly.GetPoints().GetData())
-        data = poly.GetPointData()
-        vel = vtk_to_numpy(data.GetArray("velocity"))
-        mass = vtk_to_numpy(data.GetArray("mass"))
-        vol = mass / vtk_to_numpy(data.GetArray("density"))
+    for _, path in frames(run):
+        data = read_vtp(path)
+        x, vel, mass = data["Points"], data["velocity"], data["mass"]
+        vol = mass / data["density"]
         ke = 0.5 * np.sum(mass * (vel[:, 0] ** 2 + vel[:, 1] ** 2))
         c = []
         for y in uy:

@@ -14,7 +14,7 @@ over the coarse particles. The rate is Q = log(E_coarse / E_fine) / log(dx_coars
 ... with E_coarse the (coarse, middle) error and E_fine the (middle, fine) error, as C&R's Table I
 reads (t = 1: L1 1.043e-3 and 3.885e-4 give Q = 1.46 with dx ratio 53/27).
 Writes BATCH_DIR/convergence.md (markdown, beside the paper's numbers) and convergence.csv.
-Needs numpy, scipy and VTK's Python module (Debian: python3-vtk9, python3-scipy).
+Needs numpy and scipy; the frames are read by scripts/vtp_frames.py (no VTK).
 """
 import argparse
 import csv
@@ -26,8 +26,9 @@ import sys
 
 import numpy as np
 from scipy.spatial import cKDTree
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "scripts"))
+import vtp_frames  # noqa: E402  (frames and read_vtp; main() has its own `frames`)
 
 # C&R Tables I-III: t -> (L1 coarse, L2 coarse, L1 fine, L2 fine, Q L1, Q L2); scales in the headers.
 PAPER = {
@@ -56,18 +57,10 @@ def quartic(q):
 
 def read_frame(run_dir, t):
     """Positions, velocities, volumes of the frame at time t (from particles.pvd)."""
-    pvd = open(os.path.join(run_dir, "particles.pvd")).read()
-    for ts, fname in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd):
-        if abs(float(ts) - t) < 1e-9:
-            r = vtkXMLPolyDataReader()
-            r.SetFileName(os.path.join(run_dir, fname))
-            r.Update()
-            out = r.GetOutput()
-            x = vtk_to_numpy(out.GetPoints().GetData())[:, :2]
-            pd = out.GetPointData()
-            u = vtk_to_numpy(pd.GetArray("velocity"))[:, :2]
-            vol = vtk_to_numpy(pd.GetArray("mass")) / vtk_to_numpy(pd.GetArray("density"))
-            return x, u, vol
+    for ts, path in vtp_frames.frames(run_dir):
+        if abs(ts - t) < 1e-9:
+            a = vtp_frames.read_vtp(path)
+            return a["Points"][:, :2], a["velocity"][:, :2], a["mass"] / a["density"]
     return None
 
 

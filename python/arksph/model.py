@@ -105,7 +105,7 @@ class Model:
 
     def project(self, t, y, t_start, y_start):
         """C&R's projection after a step from (t_start, y_start) to (t, y): the projected state (a new
-        array). For method.scheme = "isph" / "isph-gpps" with method.projection = "cr" only."""
+        array). For method.scheme = "isph" / "isph-gpps" with method.projection = "cummins_rudman" only."""
         return self._ode.project(float(t), y, float(t_start), y_start)
 
     @property
@@ -150,8 +150,10 @@ class Model:
         try:
             with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as scene:
                 scene.write(self.scene_toml)
-            command = [binary(), "run", scene.name, "--quiet", "--out", str(folder)]
-            command += ["--restart"] if restart else ["--overwrite"]
+            if restart:  # the checkpoint holds the scene; --set may change what a restart allows
+                command = [binary(), "run", "--restart", str(folder / "checkpoint.h5"), "--quiet"]
+            else:
+                command = [binary(), "run", scene.name, "--quiet", "--out", str(folder), "--overwrite"]
             for s in overrides(settings):
                 command += ["--set", s]
             done = subprocess.run(command, capture_output=True, text=True)
@@ -173,7 +175,8 @@ class Model:
         return self._last
 
     def state_of_frame(self, path):
-        """The state y of a frame file (.vtp or .pvtp) of a run of this scene, in this model's layout."""
+        """The state y of a frame file (.vtp or .pvtp) of a run of this scene, in this model's layout.
+        With periodic sides the frames hold positions wrapped into the box."""
         f = read_frame(path)
         order = np.argsort(f["id"], kind="stable")
         if not np.array_equal(f["id"][order], self.ids):

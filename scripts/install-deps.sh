@@ -6,7 +6,7 @@ PKGS="build-essential cmake pkg-config
 libsundials-dev libeigen3-dev libsuitesparse-dev libvtk9-dev libhdf5-dev
 doctest-dev libtomlplusplus-dev libmuparser-dev libbenchmark-dev
 libopenmpi-dev openmpi-bin libhypre-dev
-python3 python3-numpy python3-h5py python3-matplotlib python3-scipy pybind11-dev python3-dev"
+python3 python3-numpy python3-h5py python3-matplotlib python3-scipy python3-vtk9 pybind11-dev python3-dev"
 missing=""
 for p in $PKGS; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

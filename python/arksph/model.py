@@ -83,6 +83,7 @@ class Model:
         self.h = self._ode.h
         self.scheme = self._ode.scheme
         self.end_time = self._ode.end_time
+        self.periods = self._ode.periods
 
     @property
     def y0(self):
@@ -189,6 +190,16 @@ class Model:
                 raise ValueError(f"{path}: the frames do not hold the block {name!r} of the state")
             y[part] = blocks[name][order]
         return y
+
+    def difference(self, a, b):
+        """a - b, the position blocks across periodic sides (the nearest image): frames hold positions
+        wrapped into the box, an integrator's state need not."""
+        d = np.asarray(a, dtype=float) - np.asarray(b, dtype=float)
+        for name, period in zip(("x", "y"), self.periods):
+            if period is not None:
+                block = d[self.layout[name]]
+                block -= period * np.round(block / period)
+        return d
 
     def field(self, y, name):
         """One block of y by its layout name ("x", "y", "u", "v", "rho", "energy"), as a view."""

@@ -150,6 +150,17 @@ PYBIND11_MODULE(_arksph, m) {
       .def_property_readonly("scheme", [](const ParticleOde& o) { return o.scene().scheme; })
       .def_property_readonly("end_time", [](const ParticleOde& o) { return o.scene().end; })
       .def_property_readonly("scene_toml", [](const ParticleOde& o) { return o.scene().resolved_toml; })
+      .def_property_readonly("periods",
+                             [](const ParticleOde& o) {
+                               py::list periods;
+                               const arksph::Scene& s = o.scene();
+                               for (int k = 0; k < s.dimension; ++k)
+                                 if (s.sides[2 * k].kind == arksph::SideKind::periodic)
+                                   periods.append(s.max[k] - s.min[k]);
+                                 else
+                                   periods.append(py::none());
+                               return periods;
+                             })
       .def_property_readonly("has_projection", &ParticleOde::has_projection)
       .def_property_readonly("constrained", &ParticleOde::projection_is_constrained)
       .def_property_readonly("evaluations", &ParticleOde::evaluations)

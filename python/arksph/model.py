@@ -84,6 +84,7 @@ class Model:
         self.scheme = self._ode.scheme
         self.end_time = self._ode.end_time
         self.periods = self._ode.periods
+        self.sound_speed = self._ode.sound_speed  # WCSPH's c (0 for the projection schemes)
 
     @property
     def y0(self):

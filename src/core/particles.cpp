@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "core/errors.hpp"
@@ -24,7 +25,10 @@ ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_r
   long count[2] = {1, 1};
   for (int k = 0; k < ps.dim; ++k)
     count[k] = std::lround((scene.max[k] - scene.min[k]) / scene.spacing);
-  ps.n = static_cast<std::size_t>(count[0] * count[1]);
+  const std::size_t points = static_cast<std::size_t>(count[0] * count[1]);
+  // fluid.region: only the lattice points it selects hold a particle; the rest of the box is empty.
+  const std::optional<Expression> fluid =
+      scene.fluid_region.empty() ? std::nullopt : std::optional<Expression>(Expression(scene.fluid_region, {"x", "y"}));
 
   std::vector<Expression> where;
   for (const auto& ph : scene.phases) where.emplace_back(ph.where, std::vector<std::string>{"x", "y"});
@@ -36,8 +40,8 @@ ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_r
 
   const double cell_volume = std::pow(scene.spacing, ps.dim);
   for (int k = 0; k < ps.dim; ++k) {
-    ps.init_pos[k].reserve(ps.n);
-    ps.init_vel[k].reserve(ps.n);
+    ps.init_pos[k].reserve(points);
+    ps.init_vel[k].reserve(points);
   }
   std::int64_t next_id = 0;
   for (long j = 0; j < count[1]; ++j) {
@@ -45,6 +49,7 @@ ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_r
     for (long i = 0; i < count[0]; ++i) {
       const double x = scene.min[0] + (static_cast<double>(i) + 0.5) * scene.spacing;
       const double y = ps.dim == 2 ? scene.min[1] + (static_cast<double>(j) + 0.5) * scene.spacing : 0.0;
+      if (fluid && fluid->eval(x, y, 0.0) == 0.0) continue;
       std::int32_t phase = 0;
       double rho = scene.density;
       for (std::size_t p = 0; p < where.size(); ++p) {
@@ -76,6 +81,7 @@ ParticleSet make_lattice(const Scene& scene, const std::function<void()>& each_r
       ps.phase.push_back(phase);
     }
   }
+  ps.n = ps.id.size();
   return ps;
 }
 

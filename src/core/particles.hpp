@@ -40,8 +40,9 @@ struct ParticleSet {
   double init_energy = 0;         // specific internal energy at t = 0 (ideal-gas equation of state)
 };
 
-// Fills the domain with a square lattice, spacing dx, particles at min + (i + 1/2) dx; assigns
-// phases by the [[phase]] regions (the last matching region wins) and the initial velocity field.
+// Fills the domain (or the part fluid.region selects) with a square lattice, spacing dx, particles
+// at min + (i + 1/2) dx; assigns phases by the [[phase]] regions (the last matching region wins)
+// and the initial velocity field.
 // A NaN or infinite initial velocity is bad input (InputError naming the key and the particle).
 // `each_row`, if given, is called before each row of particles (it may throw: the set-up polls for
 // a signal this way).

@@ -55,6 +55,7 @@ struct Scene {
 
   // [fluid]
   double spacing;
+  std::string fluid_region;  // expression in x, y: non-zero where the domain holds fluid at t = 0; "": all of it
   double density;
   double viscosity;  // kinematic nu
   std::vector<std::string> body_force;

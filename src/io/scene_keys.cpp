@@ -144,6 +144,11 @@ std::vector<Group> general_keys() {
             .to(&Scene::wall_particles),
         number("fluid.spacing", 0.02).required().in(above(0)).unit("m")
             .doc("initial lattice spacing dx; must divide each domain length").to(&Scene::spacing),
+        text("fluid.region", "")
+            .doc("where the domain holds fluid at t = 0: an expression in x, y, non-zero selects a lattice "
+                 "point (e.g. \"x < 1 && y < 2\"); empty: the whole domain. The rest is empty, and the "
+                 "fluid has a free surface where it meets the empty part")
+            .to(&Scene::fluid_region),
         number("fluid.density", 1.0).in(above(0)).unit("kg/m^d").doc("reference density rho0").to(&Scene::density),
         number("fluid.viscosity", 0.01).in(at_least(0)).unit("m^2/s").doc("kinematic viscosity nu")
             .to(&Scene::viscosity),

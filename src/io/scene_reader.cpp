@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <map>
+#include <optional>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -116,17 +117,29 @@ void check_lattice(const Section& fluid, double spacing, double length, int axis
                               "; at least 2 are needed");
 }
 
-// Fails unless `where` selects at least one point of the initial lattice min + (i + 1/2) spacing.
-void check_phase_region(const Scene& s, const Section& phase, const std::string& where) {
+// True when `where` selects a point of the initial lattice min + (i + 1/2) spacing that holds fluid
+// (fluid.region).
+bool selects_fluid(const Scene& s, const std::string& where) {
   const Expression region(where, {"x", "y"});
+  const std::optional<Expression> fluid =
+      s.fluid_region.empty() ? std::nullopt : std::optional<Expression>(Expression(s.fluid_region, {"x", "y"}));
   const long nx = std::lround((s.max[0] - s.min[0]) / s.spacing);
   const long ny = s.dimension == 2 ? std::lround((s.max[1] - s.min[1]) / s.spacing) : 1;
   for (long j = 0; j < ny; ++j) {
     const double y = s.dimension == 2 ? s.min[1] + (j + 0.5) * s.spacing : 0.0;
-    for (long i = 0; i < nx; ++i)
-      if (region.eval(s.min[0] + (i + 0.5) * s.spacing, y) != 0.0) return;
+    for (long i = 0; i < nx; ++i) {
+      const double x = s.min[0] + (i + 0.5) * s.spacing;
+      if (region.eval(x, y) != 0.0 && (!fluid || fluid->eval(x, y) != 0.0)) return true;
+    }
   }
-  phase.fail("where", "selects no particle of the initial lattice");
+  return false;
+}
+
+// Fails unless `where` selects at least one fluid particle of the initial lattice.
+void check_phase_region(const Scene& s, const Section& phase, const std::string& where) {
+  if (!selects_fluid(s, where))
+    phase.fail("where", s.fluid_region.empty() ? "selects no particle of the initial lattice"
+                                               : "selects no particle of the initial lattice inside fluid.region");
 }
 
 // One value of a key declared in the catalog, checked against its type, range and choices.
@@ -227,6 +240,24 @@ void check_fluid(const Section& f, const Scene& s) {
   for (std::size_t d = 0; d < dim; ++d) particles *= std::round((s.max[d] - s.min[d]) / s.spacing);
   if (!(particles <= 2e8))
     f.fail("spacing", format_number(particles) + " particles exceed the limit of 2e8");
+  if (s.fluid_region.empty()) return;
+  try {
+    Expression(s.fluid_region, {"x", "y"});
+  } catch (const InputError& e) {
+    f.fail("region", e.what());
+  }
+  if (!selects_fluid(s, s.fluid_region))
+    f.fail("region", "\"" + echo_value(s.fluid_region) + "\" selects no point of the initial lattice in the domain [" +
+                         format_number(s.min[0]) + ", " + format_number(s.max[0]) + "]" +
+                         (s.dimension == 2 ? " x [" + format_number(s.min[1]) + ", " + format_number(s.max[1]) + "]" : "") +
+                         ": the domain would hold no fluid");
+  const SchemeTraits& scheme = scheme_traits(s.scheme);
+  if (scheme.grid)  // Szewc et al. 2012 §4.2: the grid's Poisson equation fills the box
+    f.fail("region", "a free surface needs the pressure on the particles: isph-gpps solves it on a grid over the "
+                     "whole box (Szewc et al. 2012), which has no free surface; use wcsph");
+  if (!scheme.weakly_compressible)
+    f.fail("region", "a free surface under method.scheme = \"" + s.scheme + "\" needs p = 0 rows at the surface in "
+                     "the Poisson equation, which arksph does not assemble yet; use wcsph");
 }
 
 void read_phases(const Section& root, Scene& s) {

@@ -38,7 +38,7 @@ class ParticleOde {
   // ydot = f(t, y): every term, and the constrained projection's pressure where the scene has it.
   void rhs(double t, const double* y, double* ydot);
   // C&R's projection of the end-of-step state y at t in place (isph, isph-gpps with
-  // method.projection = "cr"; the state at the start of the step, t_start and y_start, centres the
+  // method.projection = "cummins_rudman"; the state at the start of the step, t_start and y_start, centres the
   // positions, C&R eq. 12).
   void project(double t_start, const double* y_start, double t, double* y);
   bool has_projection() const;

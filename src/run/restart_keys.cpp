@@ -45,6 +45,7 @@ void check_restart_keys(const Scene& a, const Scene& b, const std::string& sourc
   same("domain.max", text(a.max, dim), text(b.max, dim));
   same("fluid.spacing", text(a.spacing), text(b.spacing));
   same("fluid.density", text(a.density), text(b.density));
+  same("fluid.region", text(a.fluid_region), text(b.fluid_region));
   same("fluid.shuffle_initial_order", text(a.shuffle_initial_order), text(b.shuffle_initial_order));
   same("initial.offset", text(a.initial_offset, dim), text(b.initial_offset, dim));
   static const char* const side_names[4] = {"left", "right", "bottom", "top"};

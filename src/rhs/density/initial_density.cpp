@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "core/errors.hpp"
@@ -31,17 +32,28 @@ const std::vector<Param>& initial_density_params() {
 
 namespace {
 
-// rho0 (g . r - min_box g . r) for the uniform body force; `low` is the minimum over the box.
+// rho0 (g . r - low) for the uniform body force. `low` is the level of the fluid's top: the minimum
+// of g . r over the box, or with fluid.region (a free surface) over the particles, half a spacing
+// beyond the topmost (a flat surface at the top of the fluid; below a surface that is not flat the
+// profile is the one of its highest point).
 struct HydrostaticPressure {
   double g[2] = {0, 0};
   double low = 0;
-  HydrostaticPressure(const Scene& scene, const std::string& where) {
+  HydrostaticPressure(const Scene& scene, const ParticleSet& p, const std::string& where) {
     if (!scene.phases.empty()) throw InputError(where + "one phase only (the hydrostatic profile of layers is not built)");
     const BodyForceField force(scene.body_force, scene.dimension);
     if (!force.uniform()) throw InputError(where + "needs a body force uniform in space (fluid.body_force uses x or y)");
     force.at(0.0, 0.0, 0.0, g);
     // The lowest g . r over the box, at the corner the force points away from (the top under gravity).
     for (int k = 0; k < scene.dimension; ++k) low += g[k] * (g[k] > 0 ? scene.min[k] : scene.max[k]);
+    if (scene.fluid_region.empty() || p.n == 0) return;
+    low = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < p.n; ++a) {
+      double gr = 0;
+      for (int k = 0; k < scene.dimension; ++k) gr += g[k] * p.init_pos[k][a];
+      low = std::min(low, gr);
+    }
+    for (int k = 0; k < scene.dimension; ++k) low -= 0.5 * scene.spacing * std::abs(g[k]);
   }
   double at(double rho0, const double* r, int dim) const {
     double gr = 0;
@@ -60,7 +72,7 @@ void apply_initial_density(const Scene& scene, double sound_speed, ParticleSet& 
   if (scene.equation_of_state != "tait")
     throw InputError(scene.source + ": " + key + ": needs method.equation_of_state = \"tait\"");
   std::optional<HydrostaticPressure> hydrostatic;
-  if (scene.initial_hydrostatic) hydrostatic.emplace(scene, scene.source + ": initial.hydrostatic: ");
+  if (scene.initial_hydrostatic) hydrostatic.emplace(scene, p, scene.source + ": initial.hydrostatic: ");
   const Expression pressure = [&] {
     try {
       return Expression(scene.initial_pressure, {"x", "y"});

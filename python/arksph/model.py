@@ -4,7 +4,9 @@ import math
 import os
 import shutil
 import subprocess
+import re
 import tempfile
+import time
 from pathlib import Path
 
 import numpy as np
@@ -25,6 +27,16 @@ def binary():
     if not found:
         raise FileNotFoundError("no arksph executable: set ARKSPH_BINARY or build with ./scripts/build.sh")
     return found
+
+
+def _run_id(folder):
+    """The run id that a run folder's particles.pvd names (None: no such file or id)."""
+    try:
+        text = (Path(folder) / "particles.pvd").read_text(errors="replace")
+    except OSError:
+        return None
+    found = re.search(r'run_id="([^"]*)"', text)
+    return found.group(1) if found else None
 
 
 class RunError(RuntimeError):
@@ -136,12 +148,13 @@ class Model:
         """The largest stable step at y (CFL, viscous and force limits) from the fields of the last f."""
         return self._ode.stable_step(y)
 
-    def run(self, t_end=None, every=None, out=None, restart=False, set=None):
+    def run(self, t_end=None, every=None, out=None, restart=False, set=None, poll=0.2):
         """Runs the scene with arksph's own integrator and run loop (`arksph run`: adaptive or fixed
-        step, projection, re-sorting, checkpoints), then yields its frames in time order as
-        (t, y) in this model's layout. `out`: the output folder (a temporary one if None, removed
-        after the last frame); `restart=True` continues the run in `out` from its checkpoint.h5;
-        `set`: further overrides. A failed run raises RunError with the exit code and the message."""
+        step, projection, re-sorting, checkpoints) and yields its frames as (t, y) in this model's
+        layout, each as soon as the run has written it. `out`: the output folder (a temporary one
+        if None, removed after the last frame); `restart=True` continues the run in `out` from its
+        checkpoint.h5 (the frames of the earlier part come first); `set`: further overrides. A run
+        that fails raises RunError with its exit code and message after the frames it wrote."""
         settings = dict(set or {})
         if t_end is not None:
             settings["time.end"] = float(t_end)
@@ -149,6 +162,7 @@ class Model:
             settings["output.every"] = float(every)
         temporary = None if out is not None else tempfile.TemporaryDirectory(prefix="arksph_run_")
         folder = Path(out if out is not None else temporary.name)
+        earlier = None if restart else _run_id(folder)  # an earlier run's frames are not this run's
         try:
             with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as scene:
                 scene.write(self.scene_toml)
@@ -158,14 +172,30 @@ class Model:
                 command = [binary(), "run", scene.name, "--quiet", "--out", str(folder), "--overwrite"]
             for s in overrides(settings):
                 command += ["--set", s]
-            done = subprocess.run(command, capture_output=True, text=True)
-            os.unlink(scene.name)
-            if done.returncode != 0:
-                lines = done.stderr.strip().splitlines()
-                raise RunError(done.returncode, lines[-1] if lines else "(no message)")
-            for t, path in frames(folder):
-                self._last = (t, self.state_of_frame(path))
-                yield self._last
+            with tempfile.TemporaryFile("w+") as messages:
+                process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=messages, text=True)
+                seen = 0
+                try:
+                    while True:
+                        finished = process.poll() is not None
+                        listed = frames(folder) if (folder / "particles.pvd").is_file() else []
+                        if listed and (earlier is None or _run_id(folder) != earlier):
+                            for t, path in listed[seen:]:
+                                self._last = (t, self.state_of_frame(path))
+                                yield self._last
+                            seen = len(listed)
+                        if finished:
+                            break
+                        time.sleep(poll)
+                finally:
+                    if process.poll() is None:  # the caller stopped iterating: stop the run too
+                        process.terminate()
+                        process.wait()
+                    os.unlink(scene.name)
+                if process.returncode != 0:
+                    messages.seek(0)
+                    lines = messages.read().strip().splitlines()
+                    raise RunError(process.returncode, lines[-1] if lines else "(no message)")
         finally:
             if temporary is not None:
                 temporary.cleanup()

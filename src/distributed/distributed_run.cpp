@@ -142,6 +142,8 @@ void check_distributable(const Scene& scene, int ranks) {
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != "approximate")
       throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
+    if (!scene.fluid_region.empty())  // the surface's p = 0 rows are not in hypre's rows yet
+      throw InputError(scene.source + ": fluid.region (a free surface) under scheme " + scene.scheme + on);
   }
   if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
   if (scene.dimension != 2)

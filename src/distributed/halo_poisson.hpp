@@ -17,6 +17,8 @@
 #include "distributed_ppe/hypre_poisson.hpp"
 #include "distributed_ppe/ppe_rows.hpp"
 #include "parallel/communicator.hpp"
+#include <stdexcept>
+
 #include "projection/particle_domain.hpp"
 
 namespace arksph::distributed {
@@ -30,6 +32,10 @@ class HaloPoisson : public ParticlePoisson {
   // is not), the pinned system's solution out (P = 0 at the pinned particle).
   SolveReport solve(const FluidFields& f, const std::vector<double>& source, double dt, std::vector<double>& p) override;
   std::string name() const override { return "hypre-pcg-boomeramg"; }
+  // A free surface over ranks is refused when the run starts (distributed/distributed_run.cpp).
+  void set_given(DirichletRows given) override {
+    if (!given.empty()) throw std::logic_error("HaloPoisson: rows of given pressure over ranks are not built");
+  }
   void reset() override;
   double assembly_seconds() const override { return assembly_seconds_; }
 

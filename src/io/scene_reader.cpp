@@ -255,9 +255,11 @@ void check_fluid(const Section& f, const Scene& s) {
   if (scheme.grid)  // Szewc et al. 2012 §4.2: the grid's Poisson equation fills the box
     f.fail("region", "a free surface needs the pressure on the particles: isph-gpps solves it on a grid over the "
                      "whole box (Szewc et al. 2012), which has no free surface; use wcsph");
+  // ISPH: the projection assembles p = 0 rows at the surface (projection/ppe_assembly.hpp), but its
+  // velocity correction is not yet stable there (docs/methods/free-surface.md).
   if (!scheme.weakly_compressible)
-    f.fail("region", "a free surface under method.scheme = \"" + s.scheme + "\" needs p = 0 rows at the surface in "
-                     "the Poisson equation, which arksph does not assemble yet; use wcsph");
+    f.fail("region", "a free surface under method.scheme = \"" + s.scheme + "\": the projection's correction at the "
+                     "surface is not stable yet (docs/methods/free-surface.md); use wcsph");
 }
 
 void read_phases(const Section& root, Scene& s) {

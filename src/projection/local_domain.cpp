@@ -16,7 +16,7 @@ SolveReport LocalPoisson::solve(const FluidFields& f, const std::vector<double>&
   if (exact_operator_)
     system_ = assemble_ppe_exact(f, source, dt);
   else
-    assemble_ppe(f, source, dt, system_);
+    assemble_ppe(f, source, dt, given_, system_);
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (p.size() != f.n_real) p.assign(f.n_real, 0.0);
   return solver_->solve(system_.A, system_.b, p);

@@ -17,6 +17,7 @@ class LocalPoisson : public ParticlePoisson {
   LocalPoisson(const std::string& solver, double tolerance, bool exact_operator);
   SolveReport solve(const FluidFields& f, const std::vector<double>& source, double dt, std::vector<double>& p) override;
   std::string name() const override { return solver_->name(); }
+  void set_given(DirichletRows given) override { given_ = std::move(given); }
   void reset() override { solver_ = make_poisson_solver(solver_->name(), tolerance_); }
   double assembly_seconds() const override { return assembly_seconds_; }
 
@@ -25,6 +26,7 @@ class LocalPoisson : public ParticlePoisson {
   bool exact_operator_;
   std::unique_ptr<PoissonSolver> solver_;
   PoissonSystem system_;  // the last equation, kept for its storage
+  DirichletRows given_;
   double assembly_seconds_ = 0;
 };
 

@@ -24,6 +24,7 @@
 #include "projection/correction/correction_newton.hpp"
 #include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/poisson/poisson_solver.hpp"
+#include "projection/ppe_assembly.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -39,6 +40,9 @@ class ParticlePoisson {
                             std::vector<double>& p) = 0;
   // What summary.json calls the solver.
   virtual std::string name() const = 0;
+  // The rows of given P (a free surface: ppe_assembly.hpp) of the next solves; empty: none. Where
+  // the domain has no such rows (ranks), a non-empty set is a logic error.
+  virtual void set_given(DirichletRows given) = 0;
   // Drops the stored set-up (factorisation, hierarchy, numbering): the particles were re-ordered,
   // moved to other ranks, or a run restarts.
   virtual void reset() = 0;

@@ -80,13 +80,41 @@ PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& dive
 }
 
 void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, PoissonSystem& sys) {
+  assemble_ppe(f, divergence, dt, DirichletRows{}, sys);
+}
+
+std::vector<double> position_divergence(const FluidFields& f) {
+  std::vector<double> div(f.n_real, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < f.n_real; ++a) {
+    double s = 0;
+    f.pairs.for_pairs(a, [&](std::uint32_t b, double, double, double r2, double, double F) {
+      s += (f.m[b] / f.rho[b]) * F * r2;  // V_b r_ab . grad_a W_ab, grad_a W_ab = F r_ab
+    });
+    div[a] = -s;
+  }
+  return div;
+}
+
+std::vector<char> free_surface_particles(const FluidFields& f, double threshold) {
+  const std::vector<double> div = position_divergence(f);
+  std::vector<char> surface(div.size());
+  for (std::size_t a = 0; a < div.size(); ++a) surface[a] = div[a] < threshold;
+  return surface;
+}
+
+void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, const DirichletRows& given,
+                  PoissonSystem& sys) {
   const std::size_t n = f.n_real;
   const double eta2 = ppe_eta2(f);
-  // Source: zero mean, scaled like the rows.
-  const double mean = std::accumulate(divergence.begin(), divergence.end(), 0.0) / static_cast<double>(n);
+  const bool neumann = given.empty();
+  const std::uint32_t pinned = neumann ? 0 : static_cast<std::uint32_t>(-1);  // P_0 = 0 without given rows
+  // Source: zero mean (Neumann only), scaled like the rows.
+  const double mean =
+      neumann ? std::accumulate(divergence.begin(), divergence.end(), 0.0) / static_cast<double>(n) : 0.0;
   sys.b.resize(n);
   for (std::size_t a = 0; a < n; ++a) sys.b[a] = -(f.m[a] / f.rho[a]) * (divergence[a] - mean) / dt;
-  sys.b[0] = 0.0;
+  if (neumann) sys.b[0] = 0.0;
   // Matrix, built in compressed form without triplets: row a holds its coefficients by source
   // column, several (periodic or wall) images of one source merged. A is symmetric, so row a is
   // stored as column a of the column-major matrix (A^T, equal to A up to round-off). Each row gets
@@ -106,14 +134,28 @@ void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, d
     int* col = inner + start[a];
     double* val = value + start[a];
     int len = 0;
+    const bool fixed_row = a == pinned || (!neumann && given.fixed[a]);
+    double moved = 0;  // given P of the columns dropped, carried to the source
     const double diag = ppe_row(f, a, eta2, [](std::uint32_t s) { return s; }, [&](std::uint32_t s, double v) {
-      if (a != 0 && s != 0) {  // P_0 = 0: row and column 0 dropped
-        col[len] = static_cast<int>(s);
-        val[len++] = v;
+      if (fixed_row || s == pinned) return;  // P_0 = 0: row and column 0 dropped
+      if (!neumann && given.fixed[s]) {
+        moved += v * given.value[s];
+        return;
       }
+      col[len] = static_cast<int>(s);
+      val[len++] = v;
     });
     col[len] = static_cast<int>(a);
-    val[len++] = a == 0 ? 1.0 : diag;
+    if (a == pinned) {
+      val[len++] = 1.0;
+    } else if (fixed_row) {  // P_a = value_a, scaled like the row it replaces (1 for a lone particle)
+      const double scale = diag > 0 ? diag : 1.0;
+      val[len++] = scale;
+      sys.b[a] = scale * given.value[a];
+    } else {
+      val[len++] = diag;
+      sys.b[a] -= moved;
+    }
     const int m = sort_merge_row(col, val, len);
     used[a] = m;
   }

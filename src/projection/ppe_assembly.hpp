@@ -23,6 +23,22 @@ namespace arksph {
 // div(u)_a of C&R eq. 17 for every real particle, real neighbours only.
 std::vector<double> divergence_cummins_rudman(const FluidFields& f);
 
+// A free surface (fluid.region): the particles where P is given (Shao & Lo 2003: p = 0 on the
+// surface), each with its value. Empty: none, the Neumann problem above.
+struct DirichletRows {
+  std::vector<char> fixed;     // per real particle: 1 where P is given
+  std::vector<double> value;   // P there
+  bool empty() const { return fixed.empty(); }
+};
+
+// The surface particles, found by the divergence of position (Lind et al. 2012 §2.3):
+//   div r_a = -sum_b V_b r_ab . grad_a W_ab   over real neighbours and wall images,
+// d in the bulk of a d-dimensional fluid and about half of it at a free surface, where the kernel's
+// support is cut; a particle is on the surface below `threshold` (Lind et al.: 1.5 in 2D). Wall
+// images stand in for fluid, so a particle at a wall is not on the surface.
+std::vector<char> free_surface_particles(const FluidFields& f, double threshold);
+std::vector<double> position_divergence(const FluidFields& f);
+
 struct PoissonSystem {
   SparseMatrix A;         // -V L with particle 0 pinned
   std::vector<double> b;  // -V div(u*)/dt, zero-mean source, b_0 = 0
@@ -33,6 +49,11 @@ struct PoissonSystem {
 PoissonSystem assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt);
 // The same into an existing system, reusing its storage (no page faults on the matrix each step).
 void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, PoissonSystem& sys);
+// With rows of given P (a free surface): those rows read P_a = value_a, their columns move to the
+// source of the others (A stays symmetric positive definite), and there is no null space: no pinned
+// unknown, no shift of the source to zero mean.
+void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, double dt, const DirichletRows& given,
+                  PoissonSystem& sys);
 
 // The Neumann data of the wall points under a body force (FluidFields::ghost_dp): a wall point's
 // pressure is P_src + rho ghost_dp, so L(P)_a = s_a reads L0(P)_a = s_a + sum_b c_ab rho_b ghost_dp_b

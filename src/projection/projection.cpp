@@ -110,6 +110,8 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
       exact_operator_(scene.ppe_operator == "exact"),
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
+      free_surface_(!scene.fluid_region.empty()),
+      surface_threshold_(0.75 * scene.dimension),
       pressure_offset_(scene.ppe_pressure_offset),
       gravity_(pressure_gravity(scene)) {
   if (scheme_traits(scene.scheme).grid)
@@ -233,6 +235,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
+  if (free_surface_) poisson_->set_given(surface_rows(f, n));
   const double assembly_before = poisson_->assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (one P = 0) as the next warm start: a start
@@ -245,9 +248,11 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   // The level of P is free (Neumann walls) but matters to the symmetric gradient of eq. 11 on
   // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract), over
   // every particle, then the offset.
-  const double level = domain_->level(solution_, zero_min_level_);
+  // A free surface fixes the level: p = 0 there.
+  const double level = free_surface_ ? 0.0 : domain_->level(solution_, zero_min_level_);
+  const double offset = free_surface_ ? 0.0 : pressure_offset_;
   pressure_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + pressure_offset_;
+  for (std::size_t a = 0; a < n; ++a) pressure_[a] = solution_[a] - level + offset;
   if (gravity_.active) report(pressure_);
 
   // 3. Velocity correction, C&R eq. 11, with P at every real point of the fields (on ranks the
@@ -256,6 +261,21 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
   subtract_pressure_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
+}
+
+// p = 0 at the surface particles; with the modified pressure P = p - rho0 (g . r - min g . r) that
+// is P = -rho0 (g . r - min g . r) there (rhs/pressure_gravity.hpp: the reported p is then 0).
+DirichletRows Projection::surface_rows(const FluidFields& f, std::size_t n) const {
+  DirichletRows given;
+  given.fixed = free_surface_particles(f, surface_threshold_);
+  given.fixed.resize(n);
+  given.value.assign(n, 0.0);
+  if (gravity_.active) {
+    const std::vector<double> h = gravity_.head(n, f.x.data(), f.dim == 2 ? f.y.data() : nullptr);
+    const double lowest = domain_->level(h, true);
+    for (std::size_t a = 0; a < n; ++a) given.value[a] = -gravity_.rho0 * (h[a] - lowest);
+  }
+  return given;
 }
 
 void Projection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {

@@ -13,10 +13,13 @@ std::vector<double> PressureGravity::head(std::size_t n, const double* x, const 
 }
 
 namespace {
-// The body force's components the pressure can take: constant ones along walled axes.
+// The body force's components the pressure can take: constant ones along walled axes. None with a
+// free surface (fluid.region): there p = 0 but P = p - rho0 g . r varies along the surface, and the
+// symmetric gradient of C&R eq. 11 turns P_a sum_b m_b grad W_ab, which a cut kernel support leaves
+// non-zero, into a force on the surface particles.
 PressureGravity walled_constant_force(const Scene& scene) {
   PressureGravity out;
-  if (!scheme_traits(scene.scheme).projection) return out;
+  if (!scheme_traits(scene.scheme).projection || !scene.fluid_region.empty()) return out;
   for (const PhaseSpec& phase : scene.phases)
     if (phase.density != scene.density) return out;
   for (int k = 0; k < scene.dimension; ++k)
@@ -38,7 +41,8 @@ PressureGravity pressure_gravity(const Scene& scene) {
   const PressureGravity out = walled_constant_force(scene);
   if (!out.active)
     throw InputError(scene.source + ": method.body_force_pressure = \"modified\" needs a projection scheme, one fluid "
-                     "density and a constant fluid.body_force along a walled axis: use \"split\"");
+                     "density, no free surface (fluid.region) and a constant fluid.body_force along a walled axis: "
+                     "use \"split\"");
   return out;
 }
 

@@ -13,7 +13,8 @@
 // projection, which integrates it as an acceleration, blows up (docs/methods/isph.md).
 //
 // Chosen by method.body_force_pressure = "modified" (its automatic value wherever it applies): the
-// projection schemes (isph, isph-gpps) with one density (no [[phase]] of another density) and a
+// projection schemes (isph, isph-gpps) with one density (no [[phase]] of another density), no free
+// surface (fluid.region), and a
 // constant body force, its components along axes
 // bounded by walls; along a periodic axis g drives a flow (a channel) and stays in the momentum
 // equation. The reported pressure is p = P + rho0 (g . r - min g . r) over the particles: the

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "rhs/reference_speed.hpp"
 
 namespace arksph {
 
@@ -26,13 +27,16 @@ StateChecker::StateChecker(const Scene& scene, const Model& model, double max_ac
     : scene_(scene), model_(model) {
   // Bound on the speed: time.blowup_speed, or 100 x the largest physical speed scale of the scene
   // (sound speed for wcsph, wall speeds, initial speeds, 10 sqrt(a L) with a the largest acceleration
-  // at the start); a run beyond it has blown up.
+  // at the start, 10 sqrt(|g| L) of the body force); a run beyond it has blown up.
   double u_ref = model.sound_speed;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     u_ref = std::max(u_ref, std::hypot(scene.sides[s].velocity[0], scene.sides[s].velocity[1]));
   for (int k = 0; k < scene.dimension; ++k)
     for (double u : model.particles.init_vel[k]) u_ref = std::max(u_ref, std::abs(u));
   u_ref = std::max(u_ref, 10.0 * std::sqrt(max_acceleration * (scene.max[0] - scene.min[0])));
+  // The body force too, which the projection schemes may carry in the pressure (rhs/pressure_gravity.hpp),
+  // so that the acceleration at the start is zero: 10 sqrt(|g| L).
+  u_ref = std::max(u_ref, 10.0 * reference_speed(scene, 0.0));
   speed_limit_ = scene.blowup_speed > 0 ? scene.blowup_speed : 100.0 * std::max(u_ref, 1e-6);
   margin_ = model.rhs->kernel().radius();
 }

@@ -1,7 +1,8 @@
 // The energy budget of metrics.energy_budget (diagnostics/energy_budget.hpp) on the closed tank
-// under gravity (unit box, walls all round, g = 1 downwards, nu = 0.01, 20 x 20 particles) released
-// with a vortex u = U (sin(pi x) cos(pi y), -cos(pi x) sin(pi y)), U = 0.5, which is solenoidal and
-// has no normal velocity at the walls. The vortex spins down: its kinetic energy goes into viscous
+// under gravity released with a vortex (tests/scenes/vortex_tank.toml: unit box, walls all round,
+// g = 1 downwards, nu = 0.01, 20 x 20 particles, u = U (sin(pi x) cos(pi y), -cos(pi x) sin(pi y)),
+// U = 0.5, solenoidal and with no normal velocity at the walls), and on the periodic Taylor-Green
+// box without body force. The vortex spins down: its kinetic energy goes into viscous
 // dissipation (in the bulk and at the no-slip walls), and the pressure waves of the release trade
 // kinetic, potential and compressible energy. E = E_k + E_p + E_c + W_visc stays constant up to the
 // time-integration error and the terms of f that are not conservative; E_k + E_p + E_c alone does
@@ -24,34 +25,7 @@ using namespace arksph;
 
 namespace {
 
-const char* kVortexTank = R"toml(
-[scene]
-name = "vortex_tank"
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[boundary]
-left   = { kind = "wall" }
-right  = { kind = "wall" }
-bottom = { kind = "wall" }
-top    = { kind = "wall" }
-[fluid]
-spacing = 0.05
-viscosity = 0.01
-body_force = ["0", "-1"]
-[initial]
-velocity = ["0.5 * sin(pi * x) * cos(pi * y)", "-0.5 * cos(pi * x) * sin(pi * y)"]
-hydrostatic = true
-[method]
-scheme = "wcsph"
-[time]
-end = 0.5
-dt = 0.001
-[metrics]
-energy_budget = true
-[output]
-every = 0.05
-)toml";
+const std::string kVortexTank = testing::test_scene("vortex_tank.toml");
 
 // The timeseries.csv columns by name, one value per row.
 using Columns = std::map<std::string, std::vector<double>>;

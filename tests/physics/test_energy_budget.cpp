@@ -83,7 +83,7 @@ Balance balance_of(const Columns& c) {
 
 // The periodic Taylor-Green box of tests/scenes (WCSPH, 16 x 16, no regularisation, no density
 // diffusion, no body force) with Monaghan's gradient, which with the continuity equation conserves
-// E_k + E_c pair by pair (Monaghan 1992 §3): what is left is the time-integration error of the
+// E_k + E_c pair by pair (Monaghan 1992; docs/methods/energy-budget.md): what is left is the time-integration error of the
 // state and of W_visc's trapezoid sum, which must fall with the step. Tolerance: 0.1 % of the
 // kinetic energy that moved at dt = 0.001 (measured 0.005 %); the step halved from 0.002 must cut
 // the drift by at least 4, second order (measured 31).

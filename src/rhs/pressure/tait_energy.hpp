@@ -1,6 +1,6 @@
 // The specific compressible energy of the Tait equation of state (rhs/pressure/EquationOfState_Tait.cpp),
 //   p(rho) = c^2 rho0 / gamma ((rho / rho0)^gamma - 1) + p_b      (C&R eq. 7 with p_b),
-// from de/drho = p / rho^2 (the first law without heat, Monaghan 1992 §3), e(rho0) = 0. With
+// from de/drho = p / rho^2 (the first law without heat flux, Monaghan 1992, Monaghan 2005), e(rho0) = 0. With
 // x = rho / rho0 the integral is
 //   e(rho) = c^2 / gamma ((x^(gamma - 1) - 1) / (gamma - 1) - (x - 1) / x) + p_b / rho0 (x - 1) / x,
 // with ln x for (x^(gamma - 1) - 1) / (gamma - 1) at gamma = 1. Near rho0 the first term is

@@ -2,9 +2,9 @@
 //   W_visc(t) = - int_0^t P(s) ds,   P = sum_a m_a u_a . a_visc,a,
 // by the trapezoid rule over the accepted steps of a run: after a step from t_n to t_{n+1},
 //   W += (t_{n+1} - t_n) (P_n + P_{n+1}) / 2,
-// P taken at the state the step ends in (after any wall reflection). The error of the sum up to t
-// is (dt^2 / 12) (P'(t) - P'(0)) for a fixed step dt, second order whatever the order of the
-// integrator. W_visc >= 0 when the viscous terms only dissipate; a moving wall's work through the
+// P taken at the state the step ends in (after any wall reflection). At a fixed step dt the error
+// of W_visc(t) is -(dt^2 / 12) (P'(t) - P'(0)) + O(dt^4) (the trapezoid rule's), second order
+// whatever the order of the integrator. W_visc >= 0 when the viscous terms only dissipate; a moving wall's work through the
 // viscous terms enters with the opposite sign.
 #pragma once
 

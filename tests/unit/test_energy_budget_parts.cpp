@@ -56,7 +56,7 @@ TEST_CASE("energy budget: the viscous dissipation is the trapezoid sum of minus 
   continued.start(0.7, power(0.7));
   continued.step(1.0, power(1.0));
   CHECK(continued.total() == doctest::Approx(2 * 1.0 + 1.5 * 1.0).epsilon(1e-14));
-  // A quadratic power: the error is (dt^2 / 12) (P'(T) - P'(0)) for the step dt.
+  // A quadratic power: W's error is -(dt^2 / 12) (P'(T) - P'(0)) for the step dt, exactly.
   ViscousDissipation q;
   q.start(0.0, 0.0);
   const int steps = 10;

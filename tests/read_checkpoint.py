@@ -3,8 +3,8 @@
 
 usage:
   read_checkpoint.py FILE.h5 [...]     check existing checkpoints
-  read_checkpoint.py --run ARKSPH      make two short runs (2D with a density block, 1D without)
-                                       in a temporary directory and check their checkpoints
+  read_checkpoint.py --run ARKSPH      make two short runs (2D with a density block, 1D without, with
+                                       the energy budget) in a temporary directory and check their checkpoints
 
 Exit code 0: layout as documented; 1: a check failed (the message says which); 77: h5py is not
 installed (ctest SKIP_RETURN_CODE). Use Debian's /usr/bin/python3 (python3-h5py).
@@ -83,6 +83,9 @@ def check_file(path):
                 require(dtype == kind, f"attribute '{name}' has type {dtype}, expected {kind}")
         if "run_id" in f.attrs:  # optional
             require(h5py.check_string_dtype(attr_type(f, "run_id")[0]) is not None, "attribute 'run_id' is not a string")
+        if "viscous_dissipation" in f.attrs:  # optional: metrics.energy_budget
+            require(attr_type(f, "viscous_dissipation") == (F64, ()),
+                    "attribute 'viscous_dissipation' is not a float64 scalar")
         a = f.attrs
         fmt = a["format"]
         fmt = fmt.decode() if isinstance(fmt, bytes) else fmt
@@ -149,7 +152,7 @@ def make_checkpoints(binary, workdir):
     runs = [
         ["run", "--quiet", "--out", os.path.join(workdir, "cavity"), "--set", "time.end=0.01",
          "--set", "output.every=0.002", "--set", "time.steady_tolerance=1e-9", "--set", "time.steady_window=0.004"],
-        ["run", scene_1d, "--quiet", "--out", os.path.join(workdir, "one_d")],
+        ["run", scene_1d, "--quiet", "--out", os.path.join(workdir, "one_d"), "--set", "metrics.energy_budget=true"],
     ]
     for args in runs:
         r = subprocess.run([binary] + args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
@@ -167,6 +170,10 @@ def main(argv):
             except LayoutError as e:
                 print(f"read_checkpoint.py: FAIL: {e}")
                 return 1
+            with h5py.File(files[1], "r") as f:  # the 1D run has the energy budget on
+                if "viscous_dissipation" not in f.attrs:
+                    print("read_checkpoint.py: FAIL: the 1D run with metrics.energy_budget has no 'viscous_dissipation'")
+                    return 1
             require_kinds = {(r[0], r[2]) for r in results}
             if require_kinds != {(2, 1), (1, 0)}:
                 print(f"read_checkpoint.py: FAIL: expected a 2D checkpoint with rho and a 1D one without, got {results}")

@@ -137,6 +137,7 @@ struct Scene {
   bool poiseuille;  // Basa et al. 2008 eqs. 36-39
   bool interface;  // two phases: 0.5 contour of the smoothed phase indicator, tip heights
   std::vector<std::string> exact_velocity;  // u(x, y, t) per dimension; all "0": off
+  bool energy_budget;  // kinetic, potential, compressible energy and viscous dissipation (diagnostics/energy_budget.hpp)
 
   // Parameters that parts declare without a member here (core/param_builder.hpp), by dotted key.
   ParamTable part_params;

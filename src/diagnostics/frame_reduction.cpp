@@ -25,12 +25,13 @@ double half_width(const Scene& s) { return 0.5 * (s.max[1] - s.min[1]); }
 double centre(const Scene& s) { return 0.5 * (s.max[1] + s.min[1]); }
 }  // namespace
 
-FrameReduction::FrameReduction(const Scene& scene)
+FrameReduction::FrameReduction(const Scene& scene, double sound_speed)
     : scene_(scene),
       ghia_kernel_(ghia_interpolation_kernel(scene.spacing)),
       grid_(scene.interface ? IndicatorGrid(scene.min[0], scene.min[1], scene.max[0], scene.max[1], scene.spacing)
                             : IndicatorGrid(0, 0, 0, 0, 1)),
-      exact_(scene.exact_velocity) {
+      exact_(scene.exact_velocity),
+      energy_(scene, sound_speed) {
   std::size_t at = kBase;
   ghia_at_ = at;
   if (scene.ghia_re) {
@@ -45,6 +46,8 @@ FrameReduction::FrameReduction(const Scene& scene)
   if (scene.interface) at += 2;  // sum m d and the count over the upper phase
   exact_at_ = at;
   if (exact_.enabled()) at += 4;
+  energy_at_ = at;
+  if (energy_.enabled()) at += 2;  // E_p, E_c
   nearest_at_ = at;
   bins_ = nearest_neighbor_histogram_of(FluidFields{}, 0, 1.0).counts.size();  // its bins (no particles)
   at += bins_;
@@ -122,6 +125,11 @@ void FrameReduction::add(const FrameParticles& p, const std::function<bool(doubl
     max_[kPeak] = std::max(max_[kPeak], s.peak);
     max_[kPeakExact] = std::max(max_[kPeakExact], s.peak_exact);
   }
+  if (energy_.enabled()) {
+    const std::array<double, 2> e = energy_.sums(f, n);
+    sums_[energy_at_] += e[0];
+    sums_[energy_at_ + 1] += e[1];
+  }
   const Histogram h = nearest_neighbor_histogram_of(f, n, scene_.spacing);
   for (std::size_t k = 0; k < bins_; ++k) sums_[nearest_at_ + k] += static_cast<double>(h.counts[k]);
 }
@@ -186,6 +194,10 @@ FrameDiagnostics FrameReduction::finish(double t, const std::vector<double>& flu
     s.peak = max_[kPeak];
     s.peak_exact = max_[kPeakExact];
     out.exact = ExactVelocity::errors_from(s);
+  }
+  if (energy_.enabled()) {
+    out.potential_energy = sums_[energy_at_];
+    out.compressible_energy = sums_[energy_at_ + 1];
   }
   const Histogram shape = nearest_neighbor_histogram_of(FluidFields{}, 0, scene_.spacing);
   out.nearest.bin_width = shape.bin_width;

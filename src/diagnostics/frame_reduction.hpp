@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "diagnostics/energy_budget.hpp"
 #include "diagnostics/exact_velocity.hpp"
 #include "diagnostics/flow_metrics.hpp"
 #include "diagnostics/ghia.hpp"
@@ -37,6 +38,8 @@ struct FrameDiagnostics {
   PhaseDensity upper_density;
   ExactVelocityErrors exact;  // metrics.exact_velocity
   Histogram nearest;          // nearest-neighbour distances over dx
+  // metrics.energy_budget (diagnostics/energy_budget.hpp): E_p and E_c of the particles.
+  double potential_energy = 0, compressible_energy = 0;
 };
 
 // The particles a process adds: the first n real points of fresh fields f.
@@ -49,7 +52,8 @@ struct FrameParticles {
 
 class FrameReduction {
  public:
-  explicit FrameReduction(const Scene& scene);
+  // sound_speed: the run's resolved WCSPH sound speed (the Tait energy of metrics.energy_budget).
+  FrameReduction(const Scene& scene, double sound_speed);
   // Pass 1. owns(x, y): whether this process adds the sample point (x, y).
   void add(const FrameParticles& p, const std::function<bool(double, double)>& owns);
   std::vector<double>& sums() { return sums_; }
@@ -69,9 +73,11 @@ class FrameReduction {
   std::vector<std::array<double, 2>> ghia_points_;
   IndicatorGrid grid_;
   ExactVelocity exact_;
+  EnergyBudget energy_;
   std::size_t bins_ = 0;
   // Offsets into sums_ of each diagnostic's block (see the constructor).
-  std::size_t ghia_at_ = 0, poiseuille_at_ = 0, grid_at_ = 0, upper_at_ = 0, exact_at_ = 0, nearest_at_ = 0;
+  std::size_t ghia_at_ = 0, poiseuille_at_ = 0, grid_at_ = 0, upper_at_ = 0, exact_at_ = 0, energy_at_ = 0,
+              nearest_at_ = 0;
   std::vector<double> sums_, max_;
   std::vector<double> d_, mass_, profile_;
   std::vector<std::int32_t> phase_;  // of the added particles (scene.interface)

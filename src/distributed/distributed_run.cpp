@@ -178,6 +178,13 @@ class DecomposedRun final : public RunStrategy {
     if (scene_.reorder_every > 0 && steps % scene_.reorder_every == 0) migrate(t);
   }
   void write_frame(double t, const StepStats& stats) override;
+  ViscousDissipation* viscous_dissipation() override { return dissipation_ ? &*dissipation_ : nullptr; }
+  // The rank's own particles' power at a field refresh of the state, summed over the ranks.
+  double viscous_power(double t) override {
+    f_->eval(t, integrator_->state(), nullptr);
+    ++diagnostic_evals_;
+    return comm_.sum(f_->viscous_power(mine_->size()));
+  }
   bool steady() override { return comm_.max(static_cast<std::int64_t>(root_ && out_->steady())) > 0; }
   double steady_rate() const override { return root_ ? out_->steady_rate() : 0.0; }
   void checkpoint_if_due(double t, int frame) override;
@@ -252,6 +259,7 @@ class DecomposedRun final : public RunStrategy {
   std::int64_t fewest_ = 0;
   double migration_seconds_ = 0;
   double last_checkpoint_ = -1;  // time of the last checkpoint written
+  std::optional<ViscousDissipation> dissipation_;  // metrics.energy_budget: the same on every rank
 };
 
 DecomposedRun::DecomposedRun(const Scene& scene, const RunOptions& options, const parallel::Communicator& comm)
@@ -273,6 +281,11 @@ DecomposedRun::DecomposedRun(const Scene& scene, const RunOptions& options, cons
   set_up_stepping();
   open_output(options);
   reflections_before_ = restarting_ ? checkpoints_->restart().wall_reflections : 0;
+  if (scene_.energy_budget) {  // every rank read the checkpoint: each continues the same total
+    dissipation_.emplace(checkpoints_->earlier_viscous_dissipation());
+    checkpoints_->set_viscous_dissipation(&*dissipation_);
+    if (root_) out_->set_viscous_dissipation(&*dissipation_);
+  }
 }
 
 void DecomposedRun::open_output_folder(const RunOptions& options) {
@@ -497,7 +510,7 @@ FrameDiagnostics DecomposedRun::reduce_diagnostics(double at, FrameReduction& re
 void DecomposedRun::write_frame(double at, const StepStats& st) {
   f_->eval(at, integrator_->state(), nullptr);
   ++diagnostic_evals_;
-  FrameReduction reduction(scene_);
+  FrameReduction reduction(scene_, model_->sound_speed);
   const FrameDiagnostics diag = reduce_diagnostics(at, reduction);
   std::optional<JoinedFrame> whole;
   if (write_frames_) {

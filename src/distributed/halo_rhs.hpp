@@ -50,6 +50,9 @@ class HaloRhs {
   double local_max_acceleration() const { return max_accel_; }
   // The evaluator of the last eval: its fields hold this rank's particles first, then the halo.
   const RhsEvaluator& evaluator() const { return *evaluator_; }
+  // sum m u . a_visc over this rank's first `count` particles at the last eval, a field refresh
+  // (RhsEvaluator::viscous_power).
+  double viscous_power(std::size_t count) { return evaluator_->viscous_power(count); }
   // The state the evaluator took at the last eval, in its layout: this rank's particles, then the
   // halo copies with their owners' values (the velocities a pair loop reads at the copies).
   const double* evaluated_state() const { return y_all_.data(); }

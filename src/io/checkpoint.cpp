@@ -175,6 +175,7 @@ std::vector<unsigned char> file_image(const Checkpoint& c) {
   write_int64(file, "checkpoint_index", c.checkpoint_index);
   write_int64(file, "wall_reflections", c.wall_reflections);
   write_double(file, "cpu_seconds", c.cpu_seconds);
+  if (c.has_viscous_dissipation) write_double(file, "viscous_dissipation", c.viscous_dissipation);  // absent: no budget
   write_string(file, "scene_toml", c.scene_toml);
   if (!c.run_id.empty()) write_string(file, "run_id", c.run_id);
   {
@@ -383,6 +384,8 @@ Checkpoint read_file(const std::string& path) {
   c.checkpoint_index = read_int64(file, "checkpoint_index");
   c.wall_reflections = read_int64(file, "wall_reflections");
   c.cpu_seconds = has_attr(file, "cpu_seconds") ? read_double(file, "cpu_seconds") : 0.0;
+  c.has_viscous_dissipation = has_attr(file, "viscous_dissipation");
+  if (c.has_viscous_dissipation) c.viscous_dissipation = read_double(file, "viscous_dissipation");
   c.scene_toml = read_string(file, "scene_toml");
   if (has_attr(file, "run_id")) c.run_id = read_string(file, "run_id");
 

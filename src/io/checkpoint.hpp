@@ -35,6 +35,10 @@ struct Checkpoint {
   long wall_reflections = 0;
   double cpu_seconds = 0;       // CPU time of the run up to this state, over all restarts (run/cpu_time.hpp);
                                 // 0 in files that lack it
+  // metrics.energy_budget: the viscous dissipation W_visc accumulated up to `time`
+  // (diagnostics/viscous_dissipation.hpp); absent in files of runs without the budget.
+  bool has_viscous_dissipation = false;
+  double viscous_dissipation = 0;
   std::string scene_toml;       // Scene::resolved_toml of the run that wrote it
   std::string run_id;           // the run's id (run/output_folder.hpp); "" in files that lack it
   std::vector<double> state;    // y in StateLayout order, size layout().size()

@@ -34,6 +34,8 @@ void check_restart_values(const Checkpoint& c, const std::string& path) {
   check_time(path, "last_step", c.last_step);
   check_time(path, "next_step", c.next_step);
   check_time(path, "cpu_seconds", c.cpu_seconds);
+  if (!std::isfinite(c.viscous_dissipation))  // may be negative: a moving wall's work enters it
+    refuse(path, "viscous_dissipation", message_number(c.viscous_dissipation), "not finite");
   check_count(path, "steps", c.steps, kMaxCount);
   check_count(path, "rhs_evals", c.rhs_evals, kMaxCount);
   check_count(path, "step_attempts", c.step_attempts, kMaxCount);

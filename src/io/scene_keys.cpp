@@ -237,7 +237,14 @@ std::vector<Group> general_keys() {
             .doc("exact velocity u(x, y, t), one expression per dimension (all 0: off): relative L1 velocity "
                  "error, peak-speed error and amplitude error (the fitted multiple of the exact field, minus 1) in "
                  "timeseries.csv and summary.json")
-            .to(&Scene::exact_velocity)},
+            .to(&Scene::exact_velocity),
+        flag("metrics.energy_budget", false)
+            .doc("energy budget in timeseries.csv and summary.json: potential energy -sum m g . r, the compressible "
+                 "energy of the equation of state (wcsph; 0 for the projection schemes), the viscous dissipation "
+                 "integrated over the steps and the total with the kinetic energy, which stays constant up to the "
+                 "time-integration error and the terms that are not conservative (docs/methods/energy-budget.md); "
+                 "needs a constant body force with no component along a periodic axis; costs one field refresh per step")
+            .to(&Scene::energy_budget)},
        ""},
   };
 }

@@ -19,6 +19,7 @@
 #include "core/errors.hpp"
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
+#include "diagnostics/energy_budget.hpp"
 #include "io/input_file.hpp"
 #include "io/scene_catalog.hpp"
 #include "io/scene_defaults.hpp"
@@ -333,6 +334,19 @@ void check_method(const Section& m, Scene& s) {
     m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
 }
 
+// metrics.energy_budget: the potential energy -m g . r needs g constant, and a force along a
+// periodic axis has none (the positions wrap around; the force does work without end).
+void check_energy_budget(const Section& metrics, const Scene& s) {
+  if (!constant_body_force(s))
+    metrics.fail("energy_budget", "needs a constant fluid.body_force (no x, y or t): a varying force has no potential energy -m g . r");
+  for (int k = 0; k < s.dimension; ++k) {
+    const double g = Expression(s.body_force.at(static_cast<std::size_t>(k)), {"x", "y", "t"}).eval(0, 0, 0);
+    if (g != 0 && s.sides[static_cast<std::size_t>(2 * k)].kind == SideKind::periodic)
+      metrics.fail("energy_budget", std::string("fluid.body_force has a component along the periodic ") +
+                                        (k == 0 ? "x" : "y") + " axis, which has no potential energy -m g . r");
+  }
+}
+
 void check_time_output(const std::map<std::string, Section>& sections, Scene& s) {
   if (s.imex && !scheme_traits(s.scheme).weakly_compressible && !s.pressure_in_f())
     sections.at("time").fail("imex", "needs method.scheme = \"wcsph\", or \"isph\" with method.projection = \"constrained\" or \"orthogonal\" (got scheme \"" +
@@ -342,6 +356,7 @@ void check_time_output(const std::map<std::string, Section>& sections, Scene& s)
   if (s.directory.empty()) o.fail("directory", "must not be empty");
   if (s.interface && (s.phases.empty() || s.dimension != 2))
     sections.at("metrics").fail("interface", "needs a 2D scene with at least one [[phase]]");
+  if (s.energy_budget) check_energy_budget(sections.at("metrics"), s);
 }
 
 }  // namespace

@@ -262,6 +262,24 @@ void RhsEvaluator::viscous_acceleration(const double* u, const double* v, double
   f.vd.swap(keep_vd_);
 }
 
+double RhsEvaluator::viscous_power(std::size_t count) {
+  FluidFields& f = fields_;
+  keep_du_.assign(f.dudt.begin(), f.dudt.end());
+  keep_dv_.assign(f.dvdt.begin(), f.dvdt.end());
+  std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
+  std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
+  for (std::size_t k = 0; k < terms_.size(); ++k)
+    if (implicit_[k]) terms_[k]->apply(f);
+  const std::size_t n = std::min(count, layout_.n);
+  const bool two_d = layout_.dim == 2;
+  double power = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    power += f.m[a] * (f.u[a] * f.dudt[a] + (two_d ? f.v[a] * f.dvdt[a] : 0.0));
+  f.dudt.swap(keep_du_);
+  f.dvdt.swap(keep_dv_);
+  return power;
+}
+
 // Terms [first, last) particle by particle, for the first `count` real particles: each particle's
 // neighbourhood is gathered once (kernel values included) and handed to every term in order. Same
 // sums, in the same order, as applying the terms one after another over the pair list.

@@ -108,6 +108,13 @@ class RhsEvaluator {
   // wall rules. Leaves fields() as it found them. Affine in (u, v): the probes of the implicit
   // Jacobian (integrate/viscous_jacobian.hpp).
   void viscous_acceleration(const double* u, const double* v, double* au, double* av);
+  // sum_a m_a u_a . a_visc,a over the first `count` real particles (all: count >= n), a_visc the
+  // acceleration of the viscous terms (Term::can_be_implicit), ghost neighbours included, at the
+  // fields of the last eval, which must have been a field refresh (ydot null: the pair list is
+  // stored). Every viscous term runs on its own here, also one that another term takes over in its
+  // pair loop (Term::take_over). Leaves fields() as it found them. The viscous power of the energy
+  // budget (diagnostics/energy_budget.hpp); <= 0 for the dissipative models.
+  double viscous_power(std::size_t count);
 
  private:
   bool in(Partition part, std::size_t k) const {

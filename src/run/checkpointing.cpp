@@ -80,7 +80,14 @@ Checkpointer::Checkpointer(const Scene& scene, const Model& model, const Checkpo
     throw InputError(src + ": time.end = " + scene_schema::format_number(scene.end) +
                      " is not after the checkpoint time " + scene_schema::format_number(restart_->time) +
                      " (continue with --set time.end=...)");
+  if (scene.energy_budget && !restart_->has_viscous_dissipation)
+    throw InputError(src + ": metrics.energy_budget: the checkpoint holds no viscous_dissipation (its run had no "
+                     "energy budget), so the budget cannot continue; restart with --set metrics.energy_budget=false");
   next_ = next_index(restart_->time, every_, restart_->checkpoint_index);
+}
+
+double Checkpointer::earlier_viscous_dissipation() const {
+  return restart_ ? restart_->viscous_dissipation : 0.0;
 }
 
 int Checkpointer::first_frame() const {
@@ -157,6 +164,10 @@ std::string Checkpointer::write_state(double t, const double* y, const StepStats
   c.cpu_seconds = earlier_cpu_seconds() + segment_cpu;
   c.scene_toml = scene_.resolved_toml;
   c.run_id = run_id_;
+  if (dissipation_) {
+    c.has_viscous_dissipation = true;
+    c.viscous_dissipation = dissipation_->total();
+  }
   c.state.assign(y, y + L.size());
   const ParticleSet& p = model_.particles;
   c.mass = p.mass;

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "diagnostics/steady_state.hpp"
+#include "diagnostics/viscous_dissipation.hpp"
 #include "run/setup.hpp"
 #include "io/checkpoint.hpp"
 
@@ -41,6 +42,8 @@ class Checkpointer {
   void set_run_id(std::string id) { run_id_ = std::move(id); }
   // The steady-state monitor whose samples each checkpoint stores (null: none).
   void set_steady_monitor(const SteadyStateMonitor* m) { steady_ = m; }
+  // The viscous dissipation of the energy budget, stored in each checkpoint (null: none).
+  void set_viscous_dissipation(const ViscousDissipation* w) { dissipation_ = w; }
   const Checkpoint& restart() const { return *restart_; }
   double start_time() const { return restart_ ? restart_->time : 0.0; }
   // Index of the next output frame (frame * output.every) at the start of the run.
@@ -71,6 +74,8 @@ class Checkpointer {
                           long reflections, double segment_cpu);
   // CPU time of the runs this one continues (0 for a run from t = 0).
   double earlier_cpu_seconds() const { return restart_ ? restart_->cpu_seconds : 0.0; }
+  // The viscous dissipation of the energy budget up to the restart's time (0 for a run from t = 0).
+  double earlier_viscous_dissipation() const;
 
  private:
   bool due(double t) const;
@@ -81,6 +86,7 @@ class Checkpointer {
   std::string path_;
   std::string run_id_;
   const SteadyStateMonitor* steady_ = nullptr;
+  const ViscousDissipation* dissipation_ = nullptr;
   double every_ = 0;
   long next_ = 1;              // index k of the next scheduled checkpoint time k * every
   double last_written_ = -1;   // time of the last checkpoint written by this run

@@ -59,6 +59,8 @@ RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, double prog
   };
   try {
     run.start();
+    ViscousDissipation* dissipation = run.viscous_dissipation();  // metrics.energy_budget
+    if (dissipation) dissipation->start(t, run.viscous_power(t));
     while (t < scene.end) {
       const double t_next = next_output_time(scene, frame);
       double dt_max = 0;  // largest step since the last output (the last one may be cut to hit t_next)
@@ -76,6 +78,7 @@ RunResult run_loop(const Scene& scene, RunStrategy& run, bool quiet, double prog
           break;
         }
         run.sync_point(t, st.steps);
+        if (dissipation) dissipation->step(t, run.viscous_power(t));
         progress.step(t, st.steps, st.last_step);
         stepping += seconds_since(step_start);
         if (t < t_next) run.checkpoint_if_due(t, frame);

@@ -7,6 +7,7 @@
 //       the step's verdict: step size, wall reflections and state check, step budget, signals
 //         (agreed by every rank);
 //       the sync point: re-sort or migrate the particles when due;
+//       the energy budget's viscous dissipation advanced to the step's end (metrics.energy_budget);
 //       a scheduled checkpoint when one falls inside the output interval
 //     the frame; stop at a steady state; a scheduled checkpoint
 //   the final checkpoint (on a signal: the checkpoint of the last completed step)
@@ -20,6 +21,7 @@
 #include <string>
 
 #include "core/scene.hpp"
+#include "diagnostics/viscous_dissipation.hpp"
 #include "integrate/time_integrator.hpp"
 #include "run/run_result.hpp"
 #include "run/verdict.hpp"
@@ -52,6 +54,13 @@ class RunStrategy {
   virtual Verdict agree_after_step(double t, const Verdict& mine) = 0;
   // The sync point after the step that made `steps` accepted steps: re-sort or migrate when due.
   virtual void sync_point(double t, long steps) = 0;
+
+  // metrics.energy_budget: the viscous dissipation, which the loop advances after the start and
+  // after every accepted step (null: no budget).
+  virtual ViscousDissipation* viscous_dissipation() = 0;
+  // Collective: sum_a m_a u_a . a_visc,a over every particle at the state of t, from a field
+  // refresh there (RhsEvaluator::viscous_power); the same on every rank.
+  virtual double viscous_power(double t) = 0;
 
   // The output at time t: fields, diagnostics, the frame and the CSV row.
   virtual void write_frame(double t, const StepStats& stats) = 0;

@@ -50,6 +50,8 @@ std::vector<std::string> RunOutput::csv_columns() const {
   if (scene_.interface) c.insert(c.end(), {"bubble_y", "spike_y", "upper_density_mean", "upper_density_rms"});
   if (ExactVelocity(scene_.exact_velocity).enabled()) c.insert(c.end(), {"velocity_l1_relative", "peak_speed_error", "amplitude_error"});
   if (steady_.enabled()) c.push_back("steady_rate");
+  if (scene_.energy_budget)  // diagnostics/energy_budget.hpp
+    c.insert(c.end(), {"potential_energy", "compressible_energy", "viscous_dissipation", "total_energy"});
   return c;
 }
 
@@ -58,7 +60,7 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   rhs.eval(t, y, nullptr);  // fresh density, pressure, neighbours (timed as neighbors + rhs)
   const auto t0 = clock_type::now();
   const FluidFields& f = rhs.fields();
-  FrameReduction reduction(scene_);  // one process: its own sums are the totals
+  FrameReduction reduction(scene_, model_.sound_speed);  // one process: its own sums are the totals
   reduction.add({&f, f.n_real, d0.data(), model_.particles.phase.data()}, [](double, double) { return true; });
   const FrameDiagnostics diag = reduction.finish(t, reduction.fluctuations());
   if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
@@ -150,6 +152,13 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
   if (steady_.enabled()) {
     if (steady_.add(std::move(sample)) && steady_time_ < 0) steady_time_ = t;
     row.push_back(steady_.rate());
+  }
+  if (scene_.energy_budget) {
+    const double dissipation = dissipation_ ? dissipation_->total() : 0.0;
+    const double total = last_.kinetic_energy + diag.potential_energy + diag.compressible_energy + dissipation;
+    row.insert(row.end(), {diag.potential_energy, diag.compressible_energy, dissipation, total});
+    case_metrics_.set("potential_energy", diag.potential_energy).set("compressible_energy", diag.compressible_energy);
+    case_metrics_.set("viscous_dissipation", dissipation).set("total_energy", total);
   }
   {  // nearest-neighbour distances at the latest output time (Szewc Figs. 7, 18)
     const Histogram& hist = diag.nearest;
@@ -250,7 +259,8 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, double w
   for (const char* key : {"ghia_u_linf", "ghia_u_rms", "ghia_v_linf", "ghia_v_rms", "poiseuille_rms",
                           "poiseuille_tstar", "poiseuille_eps_max_tstar_0.5_2", "bubble_y", "spike_y",
                           "upper_density_mean", "upper_density_rms", "velocity_l1_relative", "peak_speed_error",
-                          "amplitude_error"})
+                          "amplitude_error", "potential_energy", "compressible_energy", "viscous_dissipation",
+                          "total_energy"})
     if (const Json* v = case_metrics_.find(key)) metrics.set(key, *v);
   j.set("metrics", metrics);
   Json params = Json::object();

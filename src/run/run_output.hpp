@@ -10,6 +10,7 @@
 #include "diagnostics/flow_metrics.hpp"
 #include "diagnostics/frame_reduction.hpp"
 #include "diagnostics/steady_state.hpp"
+#include "diagnostics/viscous_dissipation.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/frame.hpp"
@@ -39,6 +40,9 @@ class RunOutput {
   bool steady() const { return steady_.steady(); }
   double steady_rate() const { return steady_.rate(); }
   const SteadyStateMonitor& steady_monitor() const { return steady_; }
+  // metrics.energy_budget: the viscous dissipation whose total each CSV row carries (the run loop
+  // advances it after every step; the same on every rank).
+  void set_viscous_dissipation(const ViscousDissipation* w) { dissipation_ = w; }
   // Restart: the steady-state samples of the checkpoint (rows of `columns` values: t, KE,
   // centreline...), taken up again so that the windows continue across the restart.
   void restore_steady(const std::vector<double>& rows, int columns);
@@ -77,6 +81,7 @@ class RunOutput {
   FlowMetrics last_;
   Json case_metrics_ = Json::object();
   SteadyStateMonitor steady_;
+  const ViscousDissipation* dissipation_ = nullptr;
   double steady_time_ = -1;  // the output time at which the flow was found steady (-1: not yet)
   double eps_max_window_ = 0;  // Poiseuille: max eps for t* in [0.5, 2]
   double output_seconds_ = 0, diagnostic_seconds_ = 0;

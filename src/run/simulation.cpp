@@ -93,6 +93,12 @@ class LocalRun final : public RunStrategy {
     out_->write(t, integrator().state(), d0_, stats);
     diag_evals_ += model_.rhs->evaluations() - before;
   }
+  ViscousDissipation* viscous_dissipation() override { return dissipation_ ? &*dissipation_ : nullptr; }
+  double viscous_power(double t) override {  // a field refresh at the integrator's state
+    model_.rhs->eval(t, integrator().state(), nullptr);
+    ++diag_evals_;
+    return model_.rhs->viscous_power(model_.rhs->layout().n);
+  }
   bool steady() override { return out_->steady(); }
   double steady_rate() const override { return out_->steady_rate(); }
   void checkpoint_if_due(double t, int frame) override {
@@ -133,7 +139,8 @@ class LocalRun final : public RunStrategy {
   std::optional<StateChecker> checker_;
   std::optional<WallReflection> reflection_;
   long reflections_ = 0;
-  long diag_evals_ = 0;  // evaluations for the frames' diagnostics (summary.json)
+  long diag_evals_ = 0;  // evaluations for the frames' diagnostics and the energy budget (summary.json)
+  std::optional<ViscousDissipation> dissipation_;  // metrics.energy_budget
 };
 
 LocalRun::LocalRun(const Scene& scene, const RunOptions& options)
@@ -172,6 +179,11 @@ LocalRun::LocalRun(const Scene& scene, const RunOptions& options)
     out_->restore_steady(checkpoints_->restart().steady_samples, checkpoints_->restart().steady_columns);
   }
   checkpoints_->set_steady_monitor(&out_->steady_monitor());
+  if (scene.energy_budget) {  // continued from the checkpoint on restart
+    dissipation_.emplace(checkpoints_->earlier_viscous_dissipation());
+    out_->set_viscous_dissipation(&*dissipation_);
+    checkpoints_->set_viscous_dissipation(&*dissipation_);
+  }
   start_integrator();
 }
 

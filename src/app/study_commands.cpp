@@ -19,7 +19,7 @@ namespace arksph {
 
 namespace {
 const char* kBatchUsage =
-    "usage: arksph batch SWEEP.toml [--jobs N] [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
+    "usage: arksph batch SWEEP.toml [--jobs N] [--out DIR] [--set KEY=VALUE ...] [--quiet] [--progress-every S]\n"
     "  Runs the Cartesian product of the sweep's [[vary]] lists over its base scene, N runs at a time, each\n"
     "  a child process `arksph run` writing <out>/<run name>/. Runs already finished ok are skipped;\n"
     "  a run stopped before its end (signal, lost session) continues from its checkpoint.h5, if it wrote one.\n"
@@ -27,7 +27,9 @@ const char* kBatchUsage =
     "  Results: <out>/batch.csv and <out>/batch.json. Exit 0 if every run finished ok, 3 otherwise,\n"
     "  2 for a bad sweep file or a folder in use by another batch (nothing is run), 5 if batch.csv cannot be written.\n"
     "  Under an MPI launcher (mpirun -n K arksph batch ...) the K processes share the runs (rank r runs\n"
-    "  those with index r mod K, N at a time each); rank 0 writes the results and gives the exit code.\n";
+    "  those with index r mod K, N at a time each); rank 0 writes the results and gives the exit code.\n"
+    "  Before any run, every run's scene is read (a bad one is a bad sweep); a check that takes long says\n"
+    "  how far it got every S wall seconds (--progress-every, default 5).\n";
 
 const char* kStudyUsage =
     "usage: arksph study order STUDY.toml [--out DIR] [--set KEY=VALUE ...] [--quiet]\n"
@@ -81,13 +83,16 @@ int cmd_batch(int argc, char** argv) {
   std::string sweep_path;
   std::vector<std::string> extra_sets;
   BatchOptions opt;
-  const std::vector<std::string> list = split_option_values(argc, argv, {"--set", "--out", "--jobs"});
+  const std::vector<std::string> list = split_option_values(argc, argv, {"--set", "--out", "--jobs", "--progress-every"});
   const int count = static_cast<int>(list.size());
   for (int i = 0; i < count; ++i) {
     const std::string& a = list[i];
     if (a == "--help" || a == "-h") {
       std::fputs(kBatchUsage, stdout);
       return 0;
+    } else if (a == "--progress-every") {
+      if (i + 1 >= count) throw InputError(a + ": missing number of seconds");
+      opt.progress_every = seconds_value(a, list[++i]);
     } else if (a == "--jobs" || a == "-j" || a == "--out") {
       if (i + 1 >= count) throw InputError(a + ": missing value");
       const std::string& v = list[++i];

@@ -149,7 +149,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
   if (jobs < 1) jobs = 1;
 
   // Every run's scene must read: a bad value is a bad sweep (exit 2) before anything runs. The scene
-  // file is read once; a long check says how far it got every few seconds.
+  // file is read once; a long check says how far it got every opt.progress_every seconds.
   const std::string scene_text = read_input_file(sw.scene, "scene");
   auto reported = clock::now();
   for (std::size_t k = 0; k < sw.runs.size(); ++k) {
@@ -160,7 +160,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     } catch (const InputError& e) {
       throw InputError(sw.source + ": run " + run.name + ": " + e.what());
     }
-    if (!opt.quiet && ranks.rank == 0 && std::chrono::duration<double>(clock::now() - reported).count() >= 5) {
+    if (!opt.quiet && ranks.rank == 0 && std::chrono::duration<double>(clock::now() - reported).count() >= opt.progress_every) {
       reported = clock::now();
       std::fprintf(stderr, "batch: checked the scenes of %zu of %zu runs\n", k + 1, sw.runs.size());
     }

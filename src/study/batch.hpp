@@ -24,6 +24,7 @@ struct BatchOptions {
   std::string output;       // "" : the sweep's output folder
   std::string executable;   // the arksph binary ("" : /proc/self/exe)
   bool quiet = false;       // no progress lines
+  double progress_every = 5;  // wall seconds between the lines of the scene check ("checked the scenes of ...")
   bool launcher_ranks = false;  // share the runs with the other processes of an MPI launch (if any)
   bool folder_locked = false;   // the caller holds the output folder's lock (a study): not taken again
 };

@@ -445,6 +445,43 @@ TEST_CASE("rough edges: item 37, batch messages name what is wrong") {
   CHECK_FALSE(says(directory.err, "is varied by"));
 }
 
+TEST_CASE("rough edges: item 37, a long scene check of a sweep says how far it got") {
+  // Six runs, the last with a bad value: every scene is read before anything runs, and with
+  // --progress-every 0 each check prints its line (the default, 5 s, prints only for long checks).
+  const Scratch s("batch_check_progress");
+  const std::string sweep = s.dir / "sweep.toml";
+  std::ofstream(sweep) << "[sweep]\nscene = \"S.toml\"\n[[vary]]\nkey = \"fluid.viscosity\"\n"
+                          "values = [0.01, 0.02, -1.0]\n[[vary]]\nkey = \"time.end\"\nvalues = [0.01, 0.02]\n";
+  const RunOutcome o = s.arksph("batch " + sweep + " --out " + s.out + " --progress-every 0");
+  CHECK(o.code == 2);  // the bad viscosity: nothing runs
+  CHECK(says(o.err, "checked the scenes of 1 of 6 runs"));
+  CHECK(says(o.err, "fluid.viscosity"));
+  CHECK_FALSE(fs::exists(s.out + "/batch.csv"));
+  const RunOutcome quiet = s.arksph("batch " + sweep + " --out " + s.out + " --progress-every 0 --quiet");
+  CHECK(quiet.code == 2);
+  CHECK_FALSE(says(quiet.err, "checked the scenes"));
+}
+
+TEST_CASE("rough edges: item 37, a scene warning of a run over MPI ranks is printed once, not once per rank") {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
+    MESSAGE("no mpirun on this machine: nothing to check");
+    return;
+  }
+  const Scratch s("mpi_warning_once");
+  const std::string wrapper = std::string(ARKSPH_SOURCE_DIR) + "/scripts/mpirun.sh";
+  const RunOutcome o = run_command_captured("sh -c 'ASAN_OPTIONS=detect_leaks=0 " + wrapper + " -n 3 " +
+                                                arksph::testing::arksph_binary() + " run " + s.scene + " --quiet --out " + s.out +
+                                                " --set method.scheme=isph --set method.sound_speed=12'",
+                                            s.dir.dir.string());
+  CAPTURE(o.err);
+  CHECK(o.code == 0);
+  std::size_t count = 0;  // the warning names the key
+  for (std::size_t at = o.err.find("method.sound_speed: unused"); at != std::string::npos;
+       at = o.err.find("method.sound_speed: unused", at + 1))
+    ++count;
+  CHECK(count == 1);
+}
+
 TEST_CASE("rough edges: item 33, SIGTERM to mpirun: the ranks checkpoint and summary.json says interrupted") {
   if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
     MESSAGE("no mpirun on this machine: nothing to check");

@@ -223,15 +223,24 @@ double RhsEvaluator::load_state(double t, const double* y) {
 // The implicit partition alone into (au, av), each term over the stored pairs at the fields as they
 // are; dudt, dvdt are left as they were.
 void RhsEvaluator::implicit_acceleration(std::vector<double>& au, std::vector<double>& av) {
+  with_implicit_terms(false, [&](const FluidFields& f) {
+    au.assign(f.dudt.begin(), f.dudt.end());
+    av.assign(f.dvdt.begin(), f.dvdt.end());
+  });
+}
+
+// The implicit partition's acceleration alone in f.dudt, f.dvdt while `use` reads it, those of the
+// evaluation restored afterwards. `taken_too`: also the terms another term runs in its own loop.
+template <class Use>
+void RhsEvaluator::with_implicit_terms(bool taken_too, Use&& use) {
   FluidFields& f = fields_;
   keep_du_.assign(f.dudt.begin(), f.dudt.end());
   keep_dv_.assign(f.dvdt.begin(), f.dvdt.end());
   std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
   std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
   for (std::size_t k = 0; k < terms_.size(); ++k)
-    if (in(Partition::implicit_terms, k) && !taken_[k]) terms_[k]->apply(f);
-  au.assign(f.dudt.begin(), f.dudt.end());
-  av.assign(f.dvdt.begin(), f.dvdt.end());
+    if (implicit_[k] && (taken_too || !taken_[k])) terms_[k]->apply(f);
+  use(static_cast<const FluidFields&>(f));
   f.dudt.swap(keep_du_);
   f.dvdt.swap(keep_dv_);
 }
@@ -263,20 +272,13 @@ void RhsEvaluator::viscous_acceleration(const double* u, const double* v, double
 }
 
 double RhsEvaluator::viscous_power(std::size_t count) {
-  FluidFields& f = fields_;
-  keep_du_.assign(f.dudt.begin(), f.dudt.end());
-  keep_dv_.assign(f.dvdt.begin(), f.dvdt.end());
-  std::fill(f.dudt.begin(), f.dudt.end(), 0.0);
-  std::fill(f.dvdt.begin(), f.dvdt.end(), 0.0);
-  for (std::size_t k = 0; k < terms_.size(); ++k)
-    if (implicit_[k]) terms_[k]->apply(f);
   const std::size_t n = std::min(count, layout_.n);
   const bool two_d = layout_.dim == 2;
   double power = 0;
-  for (std::size_t a = 0; a < n; ++a)
-    power += f.m[a] * (f.u[a] * f.dudt[a] + (two_d ? f.v[a] * f.dvdt[a] : 0.0));
-  f.dudt.swap(keep_du_);
-  f.dvdt.swap(keep_dv_);
+  with_implicit_terms(true, [&](const FluidFields& f) {
+    for (std::size_t a = 0; a < n; ++a)
+      power += f.m[a] * (f.u[a] * f.dudt[a] + (two_d ? f.v[a] * f.dvdt[a] : 0.0));
+  });
   return power;
 }
 

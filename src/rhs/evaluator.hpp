@@ -124,6 +124,8 @@ class RhsEvaluator {
   double store_derivatives(const double* y, double* ydot) const;
   void sum_stages(Partition part);
   void implicit_acceleration(std::vector<double>& au, std::vector<double>& av);
+  template <class Use>
+  void with_implicit_terms(bool taken_too, Use&& use);
   void sweep(std::size_t first, std::size_t last, std::size_t count);
 
   StateLayout layout_;

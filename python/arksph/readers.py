@@ -2,7 +2,8 @@
 
 A run folder holds particles.pvd (the list of frames and their times), one frame per output time
 (particles_NNNNNN.vtp, or with output.pieces on several MPI ranks an index particles_NNNNNN.pvtp
-naming one .vtp piece per rank), timeseries.csv and summary.json.
+naming one .vtp piece per rank), timeseries.csv and summary.json; with output.walls also walls.pvd
+and one walls_NNNNNN.vtp (or .pvtp) per frame, the wall points (kind 1, "id" the particle imaged).
 
     from arksph.readers import read_run, read_frame, frames
 
@@ -22,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["read_frame", "frames", "read_run", "read_timeseries", "Run"]
+__all__ = ["read_frame", "frames", "wall_frames", "read_run", "read_timeseries", "Run"]
 
 # VTK XML type names -> NumPy type codes (the byte order is added from the file).
 _TYPES = {"Float64": "f8", "Float32": "f4", "Int64": "i8", "Int32": "i4", "Int16": "i2", "Int8": "i1",
@@ -148,7 +149,8 @@ def read_frame(path):
 
     "Points" is (n, 3) (z = 0 in 2D, y = z = 0 in 1D), vector fields are (n, components) ("velocity"
     is (n, 3)), scalar fields 1-D ("pressure", "density", "summation_density", "mass", "h" as
-    float64; "id" int64; "phase", "kind" int32). Rows are in the file's order, which arksph changes
+    float64; "id" int64; "phase", "kind" int32; "free_surface" uint8, only in the frames of a scene with
+    fluid.region). Rows are in the file's order, which arksph changes
     between frames (it re-sorts particles in memory); match rows across frames by "id".
     Raises FileNotFoundError for a missing file, ValueError naming the file if it is truncated,
     corrupt or in a format arksph does not write.
@@ -173,6 +175,17 @@ def frames(run_dir):
     pvd = _run_folder(run_dir) / "particles.pvd"
     if not pvd.is_file():
         raise FileNotFoundError("no particles.pvd in %s (a run without frames, or not a run folder)" % run_dir)
+    return _collection(pvd)
+
+
+def wall_frames(run_dir):
+    """[(time, wall file path)] of a run folder with output.walls, as its walls.pvd lists them; []
+    when the run wrote no walls."""
+    pvd = _run_folder(run_dir) / "walls.pvd"
+    return _collection(pvd) if pvd.is_file() else []
+
+
+def _collection(pvd):
     root = _xml_root(pvd, pvd.read_bytes())
     try:
         return [(float(d.get("timestep")), pvd.parent / d.get("file")) for d in root.iter("DataSet")]
@@ -238,6 +251,7 @@ class Run:
       path        the folder (pathlib.Path)
       times       1-D float64 array of the frame times, from particles.pvd
       paths       the frame files (.vtp or .pvtp), one per time
+      wall_times, wall_paths  output.walls: the times and wall files walls.pvd lists (empty without)
       frames      sequence of the frames (len, index, slice, iterate); each access reads the file
                   again and nothing is kept, so list(run.frames) holds every frame in memory
       timeseries  timeseries.csv (read_timeseries), None if the folder has none
@@ -247,6 +261,10 @@ class Run:
     frame(i) reads frame i (negative i counts from the end): a dict of the read_frame arrays plus
     "time" (float). With sort_by_id the rows are ordered by "id", so a particle has the same row in
     every frame of the run.
+
+    walls(i) reads the wall points of frame i (output.walls): the read_frame arrays of walls_NNNNNN
+    plus "time", rows in id order of the particles imaged (several rows per particle near a corner).
+    Raises FileNotFoundError for a run without wall files.
     """
 
     def __init__(self, run_dir, sort_by_id=True):
@@ -254,6 +272,9 @@ class Run:
         listed = frames(self.path)
         self.times = np.array([t for t, _ in listed], dtype=float)
         self.paths = [p for _, p in listed]
+        walls = wall_frames(self.path)
+        self.wall_times = np.array([t for t, _ in walls], dtype=float)
+        self.wall_paths = [p for _, p in walls]
         self.sort_by_id = sort_by_id
         self.frames = _Frames(self)
         csv = self.path / "timeseries.csv"
@@ -277,6 +298,14 @@ class Run:
         if self.sort_by_id:
             arrays = _sorted_by_id(path, arrays)
         arrays["time"] = float(self.times[i])
+        return arrays
+
+
+    def walls(self, i):
+        if not self.wall_paths:
+            raise FileNotFoundError("no walls.pvd in %s (a run without output.walls)" % self.path)
+        arrays = read_frame(self.wall_paths[i])
+        arrays["time"] = float(self.wall_times[i])
         return arrays
 
 

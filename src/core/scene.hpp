@@ -131,6 +131,7 @@ struct Scene {
   double every;  // 0: only first and last frame
   double checkpoint_every;  // simulated time between checkpoint.h5 writes; 0: only at the end
   bool pieces;  // several MPI ranks: one VTP piece per rank and a PVTP per frame
+  bool walls;   // the wall points of each frame as walls_NNNNNN.vtp, listed in walls.pvd
 
   // [metrics]
   int ghia_re;  // 0: off; 100 or 1000: Ghia et al. 1982 centreline errors

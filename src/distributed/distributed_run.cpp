@@ -44,6 +44,8 @@
 #include "run/run_output.hpp"
 #include "run/setup.hpp"
 #include "run/state_check.hpp"
+#include "run/wall_frame.hpp"
+#include "io/vtp_writer.hpp"
 
 namespace arksph::distributed {
 
@@ -513,6 +515,7 @@ void DecomposedRun::write_frame(double at, const StepStats& st) {
   FrameReduction reduction(scene_, model_->sound_speed);
   const FrameDiagnostics diag = reduce_diagnostics(at, reduction);
   std::optional<JoinedFrame> whole;
+  std::optional<JoinedWalls> walls;  // output.walls, joined on rank 0 (without pieces)
   if (write_frames_) {
     std::vector<double> pressure;  // isph: the last projection's, as one process's frame carries it
     if (projection_ && projection_->stats().solves > 0) {  // by id: the particles may have migrated since
@@ -520,21 +523,30 @@ void DecomposedRun::write_frame(double at, const StepStats& st) {
       for (std::int64_t id : mine_->ids()) pressure.push_back(by_id[static_cast<std::size_t>(id)]);
     }
     const RankFrame rows(at, *f_, *mine_, grid_->domain(), pressure.empty() ? nullptr : pressure.data(),
-                         reduction.number_density());
+                         reduction.number_density(), !scene_.fluid_region.empty());
+    std::optional<WallFrame> my_walls;  // the wall points of the rank's particles (run/wall_frame.hpp)
+    if (scene_.walls)
+      my_walls.emplace(scene_, f_->evaluator().fields(), rows.frame(), f_->evaluator().kernel().radius(), true);
     if (pieces_) {
       const int number = static_cast<int>(comm_.max(static_cast<std::int64_t>(root_ ? out_->frames() : 0)));
-      together(comm_, [&] { rows.write_piece(scene_.directory + "/" + piece_file_name(number, comm_.rank())); });
-    } else if (root_ && (at <= 0 || at >= scene_.end)) {
-      const std::vector<FrameRow> own = frame_rows(rows.frame());
-      f_->release_storage();
-      return_free_memory();
-      whole.emplace(comm_, own, scene_.dimension, at, model_->particles.n);
+      together(comm_, [&] {
+        rows.write_piece(scene_.directory + "/" + piece_file_name(number, comm_.rank()));
+        if (my_walls) write_vtp(scene_.directory + "/" + piece_file_name(number, comm_.rank(), "walls"), my_walls->frame());
+      });
     } else {
-      whole.emplace(comm_, rows.frame(), model_->particles.n);
+      if (my_walls) walls.emplace(comm_, my_walls->frame());
+      if (root_ && (at <= 0 || at >= scene_.end)) {
+        const std::vector<FrameRow> own = frame_rows(rows.frame());
+        f_->release_storage();
+        return_free_memory();
+        whole.emplace(comm_, own, scene_.dimension, at, model_->particles.n, !scene_.fluid_region.empty());
+      } else {
+        whole.emplace(comm_, rows.frame(), model_->particles.n);
+      }
     }
   }
   together(comm_, [&] {
-    if (root_) out_->record(diag, st, whole ? &whole->frame() : nullptr);
+    if (root_) out_->record(diag, st, whole ? &whole->frame() : nullptr, walls ? &walls->frame() : nullptr);
   });
   if (whole && root_) {
     whole.reset();

@@ -21,6 +21,8 @@ struct Frame {
   const std::int32_t* phase = nullptr;
   double smoothing_length = 0;           // h, the same for every particle of a run
   const std::int32_t* kind = nullptr;    // ParticleKind (io/output_fields.hpp); null: every particle is fluid
+  // 1 on the free-surface particles (fluid.region); null: no free_surface array in the file.
+  const std::uint8_t* free_surface = nullptr;
 };
 
 }  // namespace arksph

@@ -30,6 +30,11 @@ FrameInIdOrder::FrameInIdOrder(const Frame& f) : view_(f) {
     for (std::size_t k = 0; k < f.n; ++k) kind_[k] = f.kind[order[k]];
     view_.kind = kind_.data();
   }
+  if (f.free_surface) {
+    free_surface_.resize(f.n);
+    for (std::size_t k = 0; k < f.n; ++k) free_surface_[k] = f.free_surface[order[k]];
+    view_.free_surface = free_surface_.data();
+  }
   if (f.phase) {
     phase_.resize(f.n);
     for (std::size_t k = 0; k < f.n; ++k) phase_[k] = f.phase[order[k]];

@@ -21,6 +21,7 @@ class FrameInIdOrder {
   std::vector<std::vector<double>> doubles_;
   std::vector<std::int64_t> id_;
   std::vector<std::int32_t> phase_, kind_;
+  std::vector<std::uint8_t> free_surface_;
 };
 
 }  // namespace arksph

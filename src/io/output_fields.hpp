@@ -8,13 +8,13 @@
 namespace arksph {
 
 // Which field an entry describes; writers switch on it (-Wswitch flags a field left unhandled).
-enum class FieldId { velocity, pressure, density, summation_density, mass, id, phase, smoothing_length, kind };
+enum class FieldId { velocity, pressure, density, summation_density, mass, id, phase, smoothing_length, kind, free_surface };
 
 // Values of the `kind` field.
 enum class ParticleKind : std::int32_t { fluid = 0, wall = 1 };
 
 // Storage type of the written array (VTK XML type names).
-enum class FieldType { Float64, Int64, Int32 };
+enum class FieldType { Float64, Int64, Int32, UInt8 };
 
 struct OutputField {
   FieldId field;
@@ -41,10 +41,17 @@ inline constexpr std::array<OutputField, 9> kOutputFields{{
     {FieldId::kind, "kind", 1, FieldType::Int32, "-", "particle kind: 0 fluid, 1 wall"},
 }};
 
-// "Float64", "Int64" or "Int32".
+// Point-data arrays written only into the frames of some scenes, after those of kOutputFields.
+inline constexpr std::array<OutputField, 1> kOptionalOutputFields{{
+    {FieldId::free_surface, "free_surface", 1, FieldType::UInt8, "-",
+     "1 on the free-surface particles (divergence of position below 0.75 d, Lind et al. 2012), else 0; "
+     "only in the frames of a scene with fluid.region"},
+}};
+
+// "Float64", "Int64", "Int32" or "UInt8".
 const char* field_type_name(FieldType t);
 
-// The table as a markdown table (name, components, type, unit, description).
+// Both tables as one markdown table (name, components, type, unit, description).
 std::string output_fields_markdown();
 
 }  // namespace arksph

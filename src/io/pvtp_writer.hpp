@@ -8,11 +8,13 @@
 
 namespace arksph {
 
-// particles_NNNNNN_rR.vtp: the piece of frame `frame` written by rank `rank`.
-std::string piece_file_name(int frame, int rank);
+// particles_NNNNNN_rR.vtp: the piece of frame `frame` written by rank `rank` (walls_NNNNNN_rR.vtp
+// with prefix "walls", output.walls).
+std::string piece_file_name(int frame, int rank, const char* prefix = "particles");
 
 // Writes the index atomically; `pieces` are file names relative to the index's folder. Throws
-// OutputError("cannot write <path>: reason").
-void write_pvtp(const std::string& path, const std::vector<std::string>& pieces);
+// OutputError("cannot write <path>: reason"). `free_surface`: the pieces carry the free_surface array
+// too (io/output_fields.hpp, kOptionalOutputFields).
+void write_pvtp(const std::string& path, const std::vector<std::string>& pieces, bool free_surface = false);
 
 }  // namespace arksph

@@ -226,6 +226,11 @@ std::vector<Group> general_keys() {
             .doc("runs over several MPI ranks: each rank writes its particles of a frame as particles_NNNNNN_rR.vtp and rank 0 "
                  "particles_NNNNNN.pvtp, listed in particles.pvd; one process: ignored")
             .to(&Scene::pieces),
+        flag("output.walls", false)
+            .doc("the wall points (mirror images within one kernel support beyond each wall, and boundary.wall_particles) "
+                 "of each frame as walls_NNNNNN.vtp (kind 1, id of the particle imaged), listed in walls.pvd; with "
+                 "output.pieces, walls_NNNNNN_rR.vtp and walls_NNNNNN.pvtp")
+            .to(&Scene::walls),
         integer("metrics.ghia_re", 0).allowed({0, 100, 1000, 10000})
             .doc("Ghia et al. 1982 centreline errors at this Reynolds number (100, 1000 or 10000; 0: off); 2D lid-driven cavity only").to(&Scene::ghia_re),
         flag("metrics.poiseuille", false).doc("Poiseuille error of Basa et al. 2008 eqs. 36-39; 2D channel only (periodic in x, resting walls, force along x)")

@@ -15,6 +15,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
+#include <vtkTypeUInt8Array.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <cerrno>
@@ -98,6 +99,12 @@ vtkSmartPointer<vtkDataArray> field_array(const OutputField& fd, const Frame& f)
       for (vtkIdType i = 0; i < n; ++i) a->SetValue(i, f.kind ? f.kind[i] : static_cast<std::int32_t>(ParticleKind::fluid));
       return a;
     }
+    case FieldId::free_surface: {
+      auto a = make_array<vtkTypeUInt8Array>(fd.name, 1, n);
+      const std::uint8_t* s = need(f.free_surface, f, "free_surface");
+      for (vtkIdType i = 0; i < n; ++i) a->SetValue(i, s[i]);
+      return a;
+    }
   }
   throw std::logic_error("write_vtp: unhandled output field");
 }
@@ -127,6 +134,8 @@ vtkSmartPointer<vtkPolyData> make_polydata(const Frame& f) {
   pd->SetPoints(points);
   pd->SetVerts(verts);
   for (const OutputField& fd : kOutputFields) pd->GetPointData()->AddArray(field_array(fd, f));
+  for (const OutputField& fd : kOptionalOutputFields)
+    if (carries(fd, f)) pd->GetPointData()->AddArray(field_array(fd, f));
   return pd;
 }
 
@@ -151,6 +160,10 @@ std::string failure_reason(unsigned long code, const std::string& vtk_error) {
 }
 
 }  // namespace
+
+bool carries(const OutputField& field, const Frame& f) {
+  return field.field == FieldId::free_surface && f.free_surface;
+}
 
 void write_vtp(const std::string& path, const Frame& f) {
   vtkSmartPointer<vtkPolyData> pd = make_polydata(f);

@@ -37,6 +37,8 @@ struct DirichletRows {
 // support is cut; a particle is on the surface below `threshold` (Lind et al.: 1.5 in 2D). Wall
 // images stand in for fluid, so a particle at a wall is not on the surface.
 std::vector<char> free_surface_particles(const FluidFields& f, double threshold);
+// The threshold the projection and the frames' free_surface array use: 0.75 d (1.5 in 2D).
+inline double free_surface_threshold(int dimension) { return 0.75 * dimension; }
 std::vector<double> position_divergence(const FluidFields& f);
 
 struct PoissonSystem {

@@ -111,7 +111,7 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
       difference_divergence_(scene.ppe_divergence == "difference"),
       zero_min_level_(scene.ppe_pressure_level == "zero_min"),
       free_surface_(!scene.fluid_region.empty()),
-      surface_threshold_(0.75 * scene.dimension),
+      surface_threshold_(free_surface_threshold(scene.dimension)),
       pressure_offset_(scene.ppe_pressure_offset),
       gravity_(pressure_gravity(scene)) {
   if (scheme_traits(scene.scheme).grid)

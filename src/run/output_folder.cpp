@@ -38,7 +38,7 @@ bool is_batch_file(const std::string& name) { return name == "run.log" || name =
 
 // A file the run itself writes (without temporaries).
 bool is_run_file(const std::string& name) {
-  static const char* const fixed[] = {"particles.pvd",       "timeseries.csv",          "summary.json",
+  static const char* const fixed[] = {"particles.pvd",       "walls.pvd",       "timeseries.csv",          "summary.json",
                                       "nn_histogram.csv",    "ghia_u.csv",              "ghia_v.csv",
                                       "poiseuille_profile.csv", "profile_1d.csv",       "timeseries_before_restart.csv", "checkpoint.h5",
                                       kLockName};
@@ -49,8 +49,10 @@ bool is_run_file(const std::string& name) {
            all_digits(name.substr(std::strlen(prefix), name.size() - std::strlen(prefix) - std::strlen(ext)));
   };
   if (numbered("particles_", ".vtp") || numbered("particles_", ".pvtp") || numbered("interface_", ".csv")) return true;
-  if (starts_with(name, "particles_") && ends_with(name, ".vtp")) {  // a rank's piece particles_NNNNNN_rR.vtp
-    const std::string mid = name.substr(10, name.size() - 14);
+  if (numbered("walls_", ".vtp") || numbered("walls_", ".pvtp")) return true;  // output.walls
+  for (const std::string prefix : {"particles_", "walls_"}) {
+    if (!starts_with(name, prefix.c_str()) || !ends_with(name, ".vtp")) continue;  // a rank's piece PREFIX_NNNNNN_rR.vtp
+    const std::string mid = name.substr(prefix.size(), name.size() - prefix.size() - 4);
     const auto r = mid.find("_r");
     if (r != std::string::npos && r > 0 && r + 2 < mid.size() && all_digits(mid.substr(0, r)) &&
         all_digits(mid.substr(r + 2)))

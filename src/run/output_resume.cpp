@@ -127,6 +127,11 @@ void RunOutput::resume(const OutputHistory& h) {
   last_t_ = h.time;
   if (pvd_)
     for (const auto& [t, file] : h.pvd) pvd_->add(t, file);
+  if (walls_pvd_)  // output.walls: the earlier frames' wall files that are there (walls_NNNNNN beside particles_NNNNNN)
+    for (const auto& [t, file] : h.pvd) {
+      const std::string walls = file.rfind("particles_", 0) == 0 ? "walls_" + file.substr(10) : std::string();
+      if (!walls.empty() && std::filesystem::exists(scene_.directory + "/" + walls)) walls_pvd_->add(t, walls);
+    }
   const std::vector<std::string> columns = csv_columns();
   if (!h.csv_text.empty() && h.csv_header != columns) {
     const std::string kept = scene_.directory + "/timeseries_before_restart.csv";

@@ -13,6 +13,8 @@
 #include "io/frame_order.hpp"
 #include "io/pvtp_writer.hpp"
 #include "io/vtp_writer.hpp"
+#include "projection/ppe_assembly.hpp"
+#include "run/wall_frame.hpp"
 
 namespace arksph {
 
@@ -30,6 +32,10 @@ RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options
   if (options.write_frames) {
     pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
     pvd_->set_run_id(run_id_);
+    if (scene.walls) {
+      walls_pvd_ = std::make_unique<PvdCollection>(scene.directory, "walls.pvd");
+      walls_pvd_->set_run_id(run_id_);
+    }
   }
   csv_.open(scene.directory + "/timeseries.csv", csv_columns());  // the folder exists (OutputFolder)
 }
@@ -87,10 +93,18 @@ void RunOutput::write(double t, const double* y, const std::vector<double>& d0, 
   fr.id = model_.particles.id.data();
   fr.phase = model_.particles.phase.data();
   fr.smoothing_length = model_.h;
-  record(diag, stats, &fr);
+  std::vector<std::uint8_t> surface;  // fluid.region: the free-surface particles (Lind et al. 2012)
+  if (!scene_.fluid_region.empty()) {
+    const std::vector<char> s = free_surface_particles(f, free_surface_threshold(f.dim));
+    surface.assign(s.begin(), s.end());
+    fr.free_surface = surface.data();
+  }
+  std::optional<WallFrame> walls;
+  if (walls_pvd_) walls.emplace(scene_, f, fr, rhs.kernel().radius(), false);
+  record(diag, stats, &fr, walls ? &walls->frame() : nullptr);
 }
 
-void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole) {
+void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole, const Frame* walls) {
   auto t0 = clock_type::now();
   const double t = diag.t;
   last_ = diag.metrics;
@@ -176,8 +190,15 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
     std::snprintf(name, sizeof name, "particles_%06d.pvtp", frames_);
     std::vector<std::string> pieces;
     for (int r = 0; r < pieces_; ++r) pieces.push_back(piece_file_name(frames_, r));
-    write_pvtp(scene_.directory + "/" + name, pieces);
+    write_pvtp(scene_.directory + "/" + name, pieces, !scene_.fluid_region.empty());
     pvd_->add(t, name);
+    if (walls_pvd_) {
+      std::snprintf(name, sizeof name, "walls_%06d.pvtp", frames_);
+      pieces.clear();
+      for (int r = 0; r < pieces_; ++r) pieces.push_back(piece_file_name(frames_, r, "walls"));
+      write_pvtp(scene_.directory + "/" + name, pieces);
+      walls_pvd_->add(t, name);
+    }
   } else if (pvd_ && whole) {
     char name[64];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
@@ -186,6 +207,10 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
     rows.smoothing_length = model_.h;
     write_vtp(scene_.directory + "/" + name, rows);
     pvd_->add(t, name);
+    if (walls_pvd_ && walls) {
+      write_vtp(scene_.directory + "/" + wall_file_name(frames_), *walls);
+      walls_pvd_->add(t, wall_file_name(frames_));
+    }
   }
   ++frames_;
   output_seconds_ += since(t0);

@@ -32,7 +32,9 @@ class RunOutput {
   // A frame whose diagnostics were computed elsewhere (a decomposed run reduces them over its ranks,
   // diagnostics/frame_reduction.hpp): the CSV row and files of `diag`, and the frame: the pieces'
   // index (set_pieces), else `whole` (rows in any order, written in id order; null: no frame file).
-  void record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole);
+  // output.walls: `walls`, the frame's wall points (run/wall_frame.hpp, rows in id order), as
+  // walls_NNNNNN.vtp, or with pieces the index walls_NNNNNN.pvtp of the ranks' wall pieces.
+  void record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole, const Frame* walls = nullptr);
   // Writes summary.json (also after a failure: status "failed" with the diagnosis). Throws OutputError.
   void finish(const RunResult& result, const StepStats& stats, double wall_seconds, long diag_evals,
               long wall_reflections, long neighbor_rebuilds);
@@ -74,6 +76,7 @@ class RunOutput {
   RunOptions options_;
   std::string run_id_;
   std::unique_ptr<PvdCollection> pvd_;
+  std::unique_ptr<PvdCollection> walls_pvd_;  // output.walls: walls.pvd
   TimeseriesCsv csv_;
   int frames_ = 0;
   double last_t_ = 0;

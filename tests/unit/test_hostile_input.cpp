@@ -54,14 +54,16 @@ TEST_CASE("hostile input: the run-output names a fresh run removes, and the ones
                            "summary.json", "checkpoint.h5", "nn_histogram.csv", "ghia_u.csv",
                            "interface_000003.csv", "profile_1d.csv", "particles.pvd.tmp.4242", "checkpoint.h5.tmp",
                            ".arksph.lock", "run.log", "batch_run.txt", "particles_000002.pvtp",
-                           "particles_000002_r0.vtp", "particles_000002_r17.vtp"}) {
+                           "particles_000002_r0.vtp", "particles_000002_r17.vtp", "walls.pvd", "walls_000003.vtp",
+                           "walls_000003.pvtp", "walls_000003_r1.vtp"}) {
     CAPTURE(name);
     CHECK(is_run_output(name));
   }
   for (const char* name : {"notes.txt", "scene.toml", "particles_abc.vtp", "particles.vtp", "summary.json.bak",
                            "my.tmp.1", "batch.csv", "timeseries.csv.tmp.x", "particles_000002_r.vtp",
                            "particles__r1.vtp", "particles_000002_x1.vtp", "particles_r1.vtp", "particles_1_r1.pvtp",
-                           "checkpoint_old.h5", "checkpoint_backup_t5.h5"}) {  // a user's copies: not removed
+                           "checkpoint_old.h5", "checkpoint_backup_t5.h5", "walls.vtp", "walls_x.vtp",
+                           "walls_000003_r.vtp"}) {  // a user's copies: not removed
     CAPTURE(name);
     CHECK_FALSE(is_run_output(name));
   }

@@ -26,7 +26,9 @@
 #include "core/errors.hpp"
 #include "io/csv_writer.hpp"
 #include "io/output_fields.hpp"
+#include "io/frame_order.hpp"
 #include "io/pvd_writer.hpp"
+#include "io/pvtp_writer.hpp"
 #include "io/summary_json.hpp"
 #include "io/vtp_writer.hpp"
 
@@ -51,6 +53,7 @@ struct Particles {
   std::vector<double> x, y, u, v, p, rho, rho_sum, m;
   std::vector<std::int64_t> id;
   std::vector<std::int32_t> phase, kind;
+  std::vector<std::uint8_t> surface;
   double h = 0.0123456789;
   explicit Particles(std::size_t n_) : n(n_) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -66,6 +69,7 @@ struct Particles {
       id.push_back(1'000'000'000'000LL + 7 * static_cast<std::int64_t>(i));
       phase.push_back(static_cast<std::int32_t>(i % 3) - 1);
       kind.push_back(static_cast<std::int32_t>(i % 2));
+      surface.push_back(static_cast<std::uint8_t>(i % 5 == 1));
     }
   }
   Frame frame(int dimension) const {
@@ -101,6 +105,7 @@ double expected(const Particles& P, FieldId field, int dim, std::size_t i, int c
     case FieldId::phase: return P.phase[i];
     case FieldId::smoothing_length: return P.h;
     case FieldId::kind: return P.kind[i];
+    case FieldId::free_surface: return P.surface[i];
   }
   return NAN;
 }
@@ -169,7 +174,48 @@ TEST_CASE("output: the field table lists the documented point-data arrays and re
   CHECK(md.rfind("| name | components | type | unit | description |\n|---|---|---|---|---|\n", 0) == 0);
   CHECK(md.find("| `velocity` | 3 | Float64 | m/s |") != std::string::npos);
   CHECK(md.find("| `id` | 1 | Int64 |") != std::string::npos);
-  CHECK(std::count(md.begin(), md.end(), '\n') == 2 + static_cast<long>(kOutputFields.size()));
+  CHECK(md.find("| `free_surface` | 1 | UInt8 | - |") != std::string::npos);
+  CHECK(std::count(md.begin(), md.end(), '\n') ==
+        2 + static_cast<long>(kOutputFields.size() + kOptionalOutputFields.size()));
+}
+
+TEST_CASE("output: the free_surface array is written exactly when the frame carries it") {
+  ScratchDir tmp("vtpsurface");
+  const Particles P(20);
+  Frame f = P.frame(2);
+  write_vtp(tmp / "plain.vtp", f);
+  CHECK(read_vtp(tmp / "plain.vtp")->GetPointData()->GetArray("free_surface") == nullptr);
+  f.free_surface = P.surface.data();
+  write_vtp(tmp / "surface.vtp", f);
+  auto pd = read_vtp(tmp / "surface.vtp");
+  CHECK(pd->GetPointData()->GetNumberOfArrays() == static_cast<int>(kOutputFields.size()) + 1);
+  vtkDataArray* a = pd->GetPointData()->GetArray("free_surface");
+  REQUIRE(a != nullptr);
+  CHECK(a->GetDataType() == VTK_UNSIGNED_CHAR);
+  int bad = 0;
+  for (vtkIdType i = 0; i < 20; ++i) bad += a->GetComponent(i, 0) != expected(P, FieldId::free_surface, 2, i, 0);
+  CHECK(bad == 0);
+  // The same frame, rows shuffled: written in id order with the array permuted alike.
+  std::vector<std::size_t> order(20);
+  for (std::size_t k = 0; k < 20; ++k) order[k] = (7 * k + 3) % 20;
+  Particles Q(20);
+  for (std::size_t k = 0; k < 20; ++k) {
+    Q.id[k] = P.id[order[k]];
+    Q.surface[k] = P.surface[order[k]];
+  }
+  Frame g = Q.frame(2);
+  g.free_surface = Q.surface.data();
+  write_vtp(tmp / "shuffled.vtp", FrameInIdOrder(g).frame());
+  vtkDataArray* b = read_vtp(tmp / "shuffled.vtp")->GetPointData()->GetArray("free_surface");
+  REQUIRE(b != nullptr);
+  bad = 0;
+  for (vtkIdType i = 0; i < 20; ++i) bad += b->GetComponent(i, 0) != P.surface[static_cast<std::size_t>(i)];
+  CHECK(bad == 0);
+  // The index of pieces declares the array with the pieces that carry it.
+  write_pvtp(tmp / "plain.pvtp", {"a.vtp"});
+  write_pvtp(tmp / "surface.pvtp", {"a.vtp"}, true);
+  CHECK(slurp(tmp / "plain.pvtp").find("free_surface") == std::string::npos);
+  CHECK(slurp(tmp / "surface.pvtp").find("<PDataArray type=\"UInt8\" Name=\"free_surface\"") != std::string::npos);
 }
 
 TEST_CASE("output: VTP round trip through vtkXMLPolyDataReader is exact (2D)") { check_vtp_round_trip(2); }

@@ -206,7 +206,8 @@ TEST_CASE("output: the free_surface array is written exactly when the frame carr
   Frame g = Q.frame(2);
   g.free_surface = Q.surface.data();
   write_vtp(tmp / "shuffled.vtp", FrameInIdOrder(g).frame());
-  vtkDataArray* b = read_vtp(tmp / "shuffled.vtp")->GetPointData()->GetArray("free_surface");
+  auto shuffled = read_vtp(tmp / "shuffled.vtp");
+  vtkDataArray* b = shuffled->GetPointData()->GetArray("free_surface");
   REQUIRE(b != nullptr);
   bad = 0;
   for (vtkIdType i = 0; i < 20; ++i) bad += b->GetComponent(i, 0) != P.surface[static_cast<std::size_t>(i)];

@@ -17,11 +17,11 @@ usage: check_pieces.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC FLAGS ...]
 """
 import os
 import re
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_checks import check, finish, launch  # noqa: E402
+import run_checks  # noqa: E402
+from run_checks import check, finish  # noqa: E402
 
 try:
     import vtk
@@ -38,11 +38,7 @@ ROUND_OFF = 1e-12
 
 
 def fresh(name, ranks, args):
-    out = os.path.join(work, name)
-    shutil.rmtree(out, ignore_errors=True)
-    code, err = launch(arksph, mpiexec, flags, ranks, args, out)
-    check(code == 0, "%s on %d rank(s) exits 0 %s" % (name, ranks, err.strip()[-300:] if code else ""))
-    return out if code == 0 else None
+    return run_checks.fresh(arksph, mpiexec, flags, work, name, ranks, args)
 
 
 def listed(out):

@@ -11,17 +11,18 @@ t = 0 and at the end) on one process and on 2 ranks, frames joined on rank 0 and
 usage: check_surface_frames.py ARKSPH SOURCE_DIR WORK_DIR MPIEXEC [MPIEXEC FLAGS ...]
 """
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_checks import check, finish, launch  # noqa: E402
+import run_checks  # noqa: E402
+from run_checks import check, finish  # noqa: E402
 
 arksph, source, work, mpiexec = sys.argv[1:5]
 flags = sys.argv[5:]
 sys.path.insert(0, os.path.join(source, "python"))
 sys.path.insert(0, os.path.join(source, "tests", "python"))
 import numpy as np  # noqa: E402
+import test_surface_frames  # noqa: E402  (its COLUMN)
 from arksph.readers import read_run  # noqa: E402
 
 # Positions summed in another order on a rank (its halo) than on one process: a few ulp.
@@ -29,21 +30,12 @@ ROUND_OFF = 1e-12
 
 
 def fresh(name, ranks, args):
-    out = os.path.join(work, name)
-    shutil.rmtree(out, ignore_errors=True)
-    code, err = launch(arksph, mpiexec, flags, ranks, args, out)
-    check(code == 0, "%s on %d rank(s) exits 0 %s" % (name, ranks, err.strip()[-300:] if code else ""))
-    return read_run(out) if code == 0 else None
-
-
-def by_id(frame, name):
-    order = np.argsort(frame["id"], kind="stable")
-    return frame[name][order]
+    out = run_checks.fresh(arksph, mpiexec, flags, work, name, ranks, args)
+    return read_run(out) if out else None
 
 
 os.makedirs(work, exist_ok=True)
 scene = os.path.join(work, "column.toml")
-import test_surface_frames  # noqa: E402  (its COLUMN; it imports test_free_surface, which imports arksph)
 with open(scene, "w") as f:
     f.write(test_surface_frames.COLUMN)
 args = [scene, "--set", "output.walls=true"]

@@ -1,6 +1,8 @@
 """Shared by the scripts that run `arksph run` under the MPI launcher: named checks that print
 ok/FAILED and are counted, and one run (on one process, or on several ranks through MPIEXEC) with a
 timeout, so that a rank left waiting in a collective call fails the test instead of hanging it."""
+import os
+import shutil
 import subprocess
 import sys
 
@@ -28,6 +30,16 @@ def launch(arksph, mpiexec, flags, ranks, args, out):
         return None, ""
     print(" ".join(cmd), "->", p.returncode)
     return p.returncode, p.stderr
+
+
+def fresh(arksph, mpiexec, flags, work, name, ranks, args):
+    """Runs `arksph run ARGS` on `ranks` processes into WORK/NAME, emptied first; returns the folder,
+    or None when the run did not exit 0 (a failed check)."""
+    out = os.path.join(work, name)
+    shutil.rmtree(out, ignore_errors=True)
+    code, err = launch(arksph, mpiexec, flags, ranks, args, out)
+    check(code == 0, "%s on %d rank(s) exits 0 %s" % (name, ranks, err.strip()[-300:] if code else ""))
+    return out if code == 0 else None
 
 
 def finish(name):

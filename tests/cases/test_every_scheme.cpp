@@ -72,6 +72,7 @@ const std::vector<std::string> kScenes = {
     "cases/spin_down/defaults.toml",       "cases/taylor_green/scene.toml",
     "cases/hydrostatic_tank/scene.toml",   "cases/cavity_re10000/scene.toml",
     "cases/cavity_re1000/defaults.toml",   "cases/basa_cavity/scene.toml",
+    "cases/dam_break/scene.toml",          "cases/standing_wave/scene.toml",
 };
 
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
@@ -202,5 +203,17 @@ TEST_CASE(CASE_TEST("spin_down periodic")) { check_case("cases/spin_down/periodi
 TEST_CASE(CASE_TEST("isph_order taylor_green_re100")) {
   check_case("cases/isph_order/taylor_green_re100.toml",
              {{"isph-gpps", "method.projection: \"constrained\" needs the particle Poisson equation"}});
+}
+// A free surface: wcsph only (docs/methods/free-surface.md says why the projection schemes refuse it).
+TEST_CASE(CASE_TEST("dam_break")) {
+  check_case("cases/dam_break/scene.toml", {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
+                                            {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
+                                            {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});
+}
+TEST_CASE(CASE_TEST("standing_wave")) {
+  check_case("cases/standing_wave/scene.toml",
+             {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
+              {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
+              {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});
 }
 TEST_CASE(CASE_TEST("sweeps taylor_green_small")) { check_case("cases/sweeps/taylor_green_small.toml"); }

@@ -303,7 +303,8 @@ TEST_CASE("orthogonal projection: f is smooth in the state between walls") {
 }
 
 // The order study's fit on the vortex with the orthogonal projection: as for the constrained one.
-TEST_CASE("orthogonal projection: Heun-Euler and Bogacki-Shampine keep their orders") {
+TEST_CASE("orthogonal projection: Heun-Euler and Bogacki-Shampine keep their orders" *
+          doctest::test_suite("asan_slow")) {
   const testing::ScratchDir scratch("orthogonal_order");
   OrderStudy study = vortex_order_study(scratch);
   study.sets = {"method.projection=orthogonal"};

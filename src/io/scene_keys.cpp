@@ -68,7 +68,8 @@ std::vector<Group> general_keys() {
             .doc("corner ghost weighting alpha (Szewc et al. 2012 eq. 46)").to(&Scene::corner_alpha),
         free_slip_divergence_param(),
         choice("boundary.wall_velocity", "auto").family("wall_velocity")
-            .doc("tangential velocity of no-slip ghosts").to(&Scene::wall_velocity),
+            .doc("tangential velocity of no-slip ghosts")
+            .to(&Scene::wall_velocity),
         flag("boundary.wall_ghosts", true)
             .doc("mirror images of the fluid across the walls (Szewc et al. 2012 §6); false: none, the walls act "
                  "through boundary.wall_force only (wcsph)")

@@ -60,7 +60,9 @@ struct Param {
   bool custom = false;  // read and checked by the scene reader's own code (the box, the sides, phases)
   // The rule that gives the value of a key left at "auto" (its default then), once the whole scene is
   // read (io/scene_reader.cpp): a choice's text, or "true"/"false" for a flag. Empty when the key
-  // takes no "auto". Declared next to the key, whose doc string states the rule.
+  // takes no "auto". A closed option or a flag declares it next to the key, whose doc string states
+  // it; the key that selects a part of a family takes its family's rule (AutomaticRule,
+  // core/registry.hpp), set by the scene catalog.
   std::function<std::string(const Scene&)> automatic;
 
   // Where the value lives in a Scene: a member, or the scene's table of part parameters.

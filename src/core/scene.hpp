@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/parameter.hpp"
+#include "core/projection_method.hpp"
 
 namespace arksph {
 
@@ -90,7 +91,8 @@ struct Scene {
   std::string projection;  // isph: "cummins_rudman" (after each step) | "constrained" | "orthogonal" (pressure in f)
   double orthogonal_spacing;  // orthogonal projection: pressure node spacing / fluid.spacing
   double orthogonal_relaxation;  // orthogonal projection: beta of its relaxation rate
-  bool pressure_in_f() const { return projection == "constrained" || projection == "orthogonal"; }
+  ProjectionMethod projection_method() const { return projection_methods().at(projection); }
+  bool pressure_in_f() const { return projection_method() != ProjectionMethod::cummins_rudman; }
   double constraint_relaxation;  // constrained projection: alpha = this x U/h, the decay rate of D u
   std::string ppe_operator;  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_divergence;  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"

@@ -21,7 +21,7 @@ EnergyBudget::EnergyBudget(const Scene& scene, double sound_speed) : enabled_(sc
   // The specific energy is a state of its own (ideal gas, Basa eq. 14), or Tait's e(rho).
   if (equations_of_state().at(scene.equation_of_state).traits.adds_state("energy"))
     compressible_ = Compressible::internal_energy;
-  else if (scene.equation_of_state == "tait")
+  else if (equations_of_state().at(scene.equation_of_state).traits.tait)
     compressible_ = Compressible::tait;
   sound_speed_ = sound_speed;
   gamma_ = scene.tait_gamma;

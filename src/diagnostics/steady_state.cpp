@@ -20,10 +20,18 @@ double steady_change_rate(const SteadySample& a, const SteadySample& b) {
   return rate;
 }
 
+const Option<SteadyMeasure>& steady_measures() {
+  static const Option<SteadyMeasure> o("time.steady_measure", {
+      {"window_means", SteadyMeasure::window_means}, {"intervals", SteadyMeasure::intervals}});
+  return o;
+}
+
 SteadyMeasure steady_measure_from(const std::string& name) {
-  if (name == "window_means") return SteadyMeasure::window_means;
-  if (name == "intervals") return SteadyMeasure::intervals;
-  throw std::invalid_argument("time.steady_measure: unknown measure '" + name + "'");
+  try {
+    return steady_measures().at(name);
+  } catch (const std::out_of_range& e) {
+    throw std::invalid_argument(e.what());
+  }
 }
 
 namespace {
@@ -97,7 +105,7 @@ const std::vector<Param>& steady_state_params() {
           .doc("simulated time of the steady-state window (time.steady_measure); the samples start anew on "
                "restart (0: the latest output interval)")
           .to(&Scene::steady_window),
-      choice("time.steady_measure", "window_means").choices({"window_means", "intervals"})
+      choice("time.steady_measure", "window_means").choices(steady_measures().names())
           .doc("the steady-state change rate: window_means compares the mean samples of the two latest windows of "
                "time.steady_window (robust to particle noise; the window must be 0 or at least output.every), "
                "intervals takes the largest change between consecutive output times within one window")

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "core/option.hpp"
 #include "core/parameter.hpp"
 
 namespace arksph {
@@ -44,6 +45,8 @@ struct SteadySample {
 double steady_change_rate(const SteadySample& a, const SteadySample& b);
 
 enum class SteadyMeasure { window_means, intervals };
+// time.steady_measure's values (the choices of the key).
+const Option<SteadyMeasure>& steady_measures();
 
 // time.steady_measure's value ("window_means" or "intervals"); throws std::invalid_argument otherwise.
 SteadyMeasure steady_measure_from(const std::string& name);

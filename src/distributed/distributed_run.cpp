@@ -137,12 +137,12 @@ void check_distributable(const Scene& scene, int ranks) {
 #ifndef ARKSPH_WITH_HYPRE
     throw InputError(scene.source + ": scheme " + scene.scheme + " (this build has no hypre for the pressure solve)" + on);
 #endif
-    if (scene.projection == "orthogonal")
+    if (scene.projection_method() == ProjectionMethod::orthogonal)
       throw InputError(scene.source + ": method.projection = " + scene.projection + on);
     const auto* solver = correction_solvers().find(scene.correction_solver);
-    if (scene.density_correction != "none" && solver && solver->traits.one_process)
+    if (density_corrections().at(scene.density_correction).traits.corrects_density && solver && solver->traits.one_process)
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
-    if (scene.ppe_operator != "approximate")
+    if (projection_options().ppe_operator.at(scene.ppe_operator) != PpeOperator::approximate)
       throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
     if (!scene.fluid_region.empty())  // the surface's p = 0 rows are not in hypre's rows yet
       throw InputError(scene.source + ": fluid.region (a free surface) under scheme " + scene.scheme + on);
@@ -418,7 +418,7 @@ void DecomposedRun::set_up_stepping() {
       projection_->project(tt, yl);
       pressure_ids_ = mine_->ids();
     };
-    if (scene_.projection_points == "stages")
+    if (projection_options().projection_points.at(scene_.projection_points) == ProjectionPoints::stages)
       eo_.postprocess_stage = [this](double tt, double* yl) {
         projection_->project_stage(tt, yl);
         pressure_ids_ = mine_->ids();

@@ -18,8 +18,8 @@ Scene scene_defaults();
 
 // Each key of `automatic` (keys left at "auto") takes the value its rule gives for `s` (text for a
 // choice, "true" or "false" for a flag), recorded in s.automatic; those the scene does not use are
-// listed in s.automatic_unused. A rule that reads another automatic key applies that key's rule
-// itself when it finds "auto" there, so their order does not matter.
+// listed in s.automatic_unused. A family's rule that reads another family's part asks SelectedParts,
+// which applies that family's rule where its key is still "auto", so their order does not matter.
 void resolve_automatic(Scene& s, const std::vector<const CatalogKey*>& automatic);
 
 // output.directory of a scene that does not set it.

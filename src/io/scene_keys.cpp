@@ -1,8 +1,10 @@
 // The general scene keys (those not declared by a registered part), in the order of the scene file,
 // and their assembly with the families' keys into the scene catalog.
 #include <algorithm>
+#include <stdexcept>
 
 #include "boundary/wall_velocity_rules.hpp"
+#include "boundary/walled_flow.hpp"
 #include "core/param_builder.hpp"
 #include "core/scheme.hpp"
 #include "diagnostics/steady_state.hpp"
@@ -14,7 +16,7 @@
 #include "projection/poisson/poisson_solver.hpp"
 #include "projection/projection.hpp"
 #include "rhs/density/initial_density.hpp"
-#include "rhs/reference_speed.hpp"
+#include "rhs/neighbor_cache.hpp"
 #include "rhs/term_registry.hpp"
 
 namespace arksph {
@@ -37,77 +39,9 @@ ParamBuilder table(std::string key, std::string doc) {
 }
 
 FamilyInfo kernel_family() {
-  FamilyInfo info{"kernel", "method.kernel", {}, {}};
+  FamilyInfo info{"kernel", "method.kernel", {}, {}, {}};
   for (const auto& [name, summary] : kernel_summaries()) info.entries.push_back({name, summary, {}, {}});
   return info;
-}
-
-// method.density_mode = "auto". wcsph with phases: the summation density (Szewc eq. 21); with the
-// continuity equation the Rayleigh-Taylor case blows up at t ~ 0.85. One phase, and the projection
-// schemes (whose density is not in the state): continuity (Szewc eq. 19), the setting of the cavity
-// and Poiseuille cases.
-std::string automatic_density_mode(const Scene& s) {
-  return scheme_traits(s.scheme).weakly_compressible && !s.phases.empty() ? "summation" : "continuity";
-}
-
-// True for isph (C&R's projection after each step) with the P-W correction, in a walled box with a
-// flow (a wall or initial speed): the scenes whose automatic regularisation is the transport velocity.
-bool corrected_walled_flow(const Scene& s) {
-  bool wall = false;
-  for (int i = 0; i < 2 * s.dimension; ++i) wall |= s.sides[i].kind == SideKind::wall;
-  return wall && scheme_traits(s.scheme).particle_poisson() && !s.pressure_in_f() &&
-         s.density_correction == "pozorski_wawrenczuk" && flow_speed(s) > 0;
-}
-
-// method.regularisation = "auto". Particle shifting for every scheme: on the Taylor-Green vortex
-// (Re = 100, 50 x 50, t = 1) it brings the relative L1 velocity error from 0.42 to 0.003 (isph,
-// constrained projection), 0.51 to 0.05 (isph-gpps) and 0.73 to 0.003 (wcsph, with delta-SPH), and
-// it keeps the walled spin-down's density error at a fiftieth (docs/methods/regularisation.md).
-// Where the P-W correction already holds the particles at the reference density in a walled flow,
-// Adami's transport velocity: it dissipates less than shifting and imposes no step limit. Cavity at
-// Re = 1000, 60 x 60, t = 60, with the quadratic wall velocity that comes with it: Ghia r.m.s.
-// 0.026 / 0.038 in 8,041 steps, against shifting's 0.055 / 0.077 in 42,600 (cases/cavity_re1000).
-std::string automatic_regularisation(const Scene& s) {
-  return corrected_walled_flow(s) ? "transport_velocity" : "shifting";
-}
-
-// boundary.wall_velocity = "auto". Mirrored ghosts (Szewc's walls), except beside the transport
-// velocity of isph with the P-W correction: there the walls' dissipation is the larger error left,
-// and Basa's quadratic extrapolation takes it out (cavity at Re = 1000: Ghia v r.m.s. 0.040 against
-// 0.056 mirrored, kinetic energy at t = 60 0.037 against 0.034).
-std::string automatic_wall_velocity(const Scene& s) {
-  const std::string regularisation = s.regularisation == "auto" ? automatic_regularisation(s) : s.regularisation;
-  return corrected_walled_flow(s) && regularisation == "transport_velocity" && s.dimension == 2 ? "quadratic"
-                                                                                                 : "mirror";
-}
-
-// method.density_diffusion = "auto". delta-SPH damps WCSPH's pressure noise where the density is a
-// state (the continuity equation); nothing to diffuse otherwise.
-std::string automatic_density_diffusion(const Scene& s) {
-  const std::string mode = s.density_mode == "auto" ? automatic_density_mode(s) : s.density_mode;
-  return scheme_traits(s.scheme).weakly_compressible && mode == "continuity" ? "delta_sph" : "none";
-}
-
-// boundary.free_slip_divergence = "auto". The cavity (Re = 1000) needs the free-slip images for
-// isph-gpps (the run blows up by t ~ 0.8 without them) and for wcsph, where the no-slip divergence
-// at the lid corners gives a negative density by t ~ 0.07 (Re = 100: the same). isph with C&R eq. 17
-// does not read them; walls at rest under wcsph keep the no-slip images (Poiseuille, Basa's setting),
-// except below a free surface: in the dam break (a column a x 2a, 40 x 80 particles, up to its
-// impact on the far wall) the floor's no-slip images behind the surge's tip, their tangential
-// velocity reversed, put a false compression of order 2 U into the tip's continuity equation; the
-// floor particles at the tip then reach 2-3 times the front speed with pressures of -40 to +50
-// rho g a. With the free-slip images the largest speed is the tip's (within 7 %) and the pressure
-// stays within [-0.7, 1.9] rho g a.
-std::string automatic_free_slip_divergence(const Scene& s) {
-  bool wall = false, moving = false;
-  for (int i = 0; i < 2 * s.dimension; ++i) {
-    if (s.sides[i].kind != SideKind::wall) continue;
-    wall = true;
-    moving |= s.sides[i].velocity[0] != 0 || s.sides[i].velocity[1] != 0;
-  }
-  const SchemeTraits& scheme = scheme_traits(s.scheme);
-  const bool surface = !s.fluid_region.empty();
-  return wall && (scheme.grid || (scheme.weakly_compressible && (moving || surface))) ? "true" : "false";
 }
 
 // One entry per key; a family selector pulls in the family's keys right after itself.
@@ -132,13 +66,10 @@ std::vector<Group> general_keys() {
         table("boundary.top", side_doc + " (2D only)"),
         number("boundary.corner_alpha", 0.0).in(between(-1, 1))
             .doc("corner ghost weighting alpha (Szewc et al. 2012 eq. 46)").to(&Scene::corner_alpha),
-        flag("boundary.free_slip_divergence", false)
-            .doc("free-slip images for the velocity divergence only (Szewc et al. 2012 §6); auto: true with walls for isph-gpps, and for wcsph when a wall moves or the fluid has a free surface (fluid.region); else false")
-            .automatic(automatic_free_slip_divergence).to(&Scene::free_slip_divergence),
+        free_slip_divergence_param(),
         choice("boundary.wall_velocity", "auto").family("wall_velocity")
-            .doc("tangential velocity of no-slip ghosts; auto: quadratic beside the transport velocity that isph with "
-                 "the P-W correction takes in a walled flow, else mirror")
-            .automatic(automatic_wall_velocity).to(&Scene::wall_velocity),
+            .doc("tangential velocity of no-slip ghosts")
+            .to(&Scene::wall_velocity),
         flag("boundary.wall_ghosts", true)
             .doc("mirror images of the fluid across the walls (Szewc et al. 2012 §6); false: none, the walls act "
                  "through boundary.wall_force only (wcsph)")
@@ -189,22 +120,18 @@ std::vector<Group> general_keys() {
         choice("method.equation_of_state", "tait").family("equation_of_state")
             .doc("equation of state of wcsph").to(&Scene::equation_of_state),
         choice("method.density_mode", "auto").family("density_mode")
-            .doc("how the density is obtained; auto: summation for wcsph with a [[phase]], else continuity")
-            .automatic(automatic_density_mode).to(&Scene::density_mode),
+            .doc("how the density is obtained").to(&Scene::density_mode),
         choice("method.pressure_gradient", "colagrossi").family("pressure_gradient")
             .doc("symmetric form of the pressure gradient (wcsph)").to(&Scene::pressure_gradient),
         choice("method.density_correction", "none").family("density_correction")
             .doc("position correction after the projection (projection schemes)").to(&Scene::density_correction),
         choice("method.regularisation", "auto").family("regularisation")
-            .doc("particle regularisation: a velocity added to dr/dt inside f(t, y); auto: transport_velocity for isph "
-                 "with the P-W correction in a walled flow, else shifting")
-            .automatic(automatic_regularisation).to(&Scene::regularisation),
+            .doc("particle regularisation: a velocity added to dr/dt inside f(t, y)").to(&Scene::regularisation),
         choice("method.density_diffusion", "auto").family("density_diffusion")
-            .doc("diffusive term in the continuity equation (wcsph); auto: delta_sph for wcsph with the continuity equation, else none")
-            .automatic(automatic_density_diffusion).to(&Scene::density_diffusion)},
+            .doc("diffusive term in the continuity equation (wcsph)").to(&Scene::density_diffusion)},
        ""},
       {projection_params(), "isph"},
-      {{choice("method.neighbor_storage", "pairs").choices({"pairs", "candidates"})
+      {{choice("method.neighbor_storage", "pairs").choices(neighbor_storages().names())
             .doc("kernel values stored per pair (fast), or only the candidates stored and the kernel recomputed by every term (less memory)")
             .to(&Scene::neighbor_storage),
         flag("method.force_sweep", true)
@@ -261,17 +188,59 @@ std::vector<Group> general_keys() {
   };
 }
 
+// The parts a scene selects, read from its family keys; a key at "auto" is answered by its family's
+// rule, so a rule may ask for a family whose key is resolved after its own.
+class CatalogParts final : public SelectedParts {
+ public:
+  explicit CatalogParts(const Scene& s) : s_(s) {}
+  std::string name(const std::string& family) const override {
+    const FamilyInfo& f = known_family(family);
+    for (const CatalogKey& k : scene_catalog())
+      if (k.param.key == f.key) {
+        const std::string value = std::get<std::string>(k.param.load(s_));
+        return value == "auto" && f.automatic ? f.automatic.choose(s_, *this) : value;
+      }
+    throw std::logic_error("family " + family + ": its key " + f.key + " is not in the scene catalog");
+  }
+  const PartTraits& traits(const std::string& family) const override {
+    const FamilyInfo& f = known_family(family);
+    const std::string selected = name(family);
+    for (const auto& e : f.entries)
+      if (e.name == selected) return e.traits;
+    throw std::out_of_range("unknown " + family + " '" + selected + "'");
+  }
+
+ private:
+  static const FamilyInfo& known_family(const std::string& family) {
+    if (const FamilyInfo* f = find_family(family)) return *f;
+    throw std::logic_error("automatic rule: no family " + family);
+  }
+  const Scene& s_;
+};
+
+// A key that selects a part of a family with an automatic rule takes "auto" (its default) and the
+// rule, whose description ends the key's.
+CatalogKey catalog_key(Param p, std::string owner) {
+  const FamilyInfo* f = p.family.empty() ? nullptr : find_family(p.family);
+  if (f && f->automatic && p.key == f->key) {
+    p.fallback = std::string("auto");
+    p.doc += "; auto: " + f->automatic.doc;
+    p.automatic = [f](const Scene& s) { return f->automatic.choose(s, CatalogParts(s)); };
+  }
+  return {std::move(p), std::move(owner)};
+}
+
 std::vector<CatalogKey> build_catalog() {
   std::vector<CatalogKey> out;
   for (const Group& g : general_keys()) {
     for (const Param& p : g.keys) {
-      out.push_back({p, g.owner});
+      out.push_back(catalog_key(p, g.owner));
       if (p.family.empty()) continue;
       const FamilyInfo* f = find_family(p.family);
       if (!f) continue;
-      for (const Param& fp : f->params) out.push_back({fp, f->family});
+      for (const Param& fp : f->params) out.push_back(catalog_key(fp, f->family));
       for (const auto& e : f->entries)
-        for (const Param& ep : e.params) out.push_back({ep, f->family + ": " + e.name});
+        for (const Param& ep : e.params) out.push_back(catalog_key(ep, f->family + ": " + e.name));
     }
   }
   return out;

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "boundary/wall_velocity_rules.hpp"
 #include "core/expression.hpp"
 #include "core/scheme.hpp"
+#include "diagnostics/steady_state.hpp"
 #include "kernels/kernel.hpp"
+#include "projection/projection_options.hpp"
 
 namespace arksph {
 
@@ -71,7 +74,7 @@ void check_progress(const std::map<std::string, Section>& sections, const Scene&
   if (s.steady_tolerance > 0 && s.every <= 0)
     time.fail("steady_tolerance", format_number(s.steady_tolerance) +
                                       " needs output.every > 0: the steady-state rate is measured between output times");
-  if (s.steady_tolerance > 0 && s.steady_measure == "window_means" && s.steady_window > 0 && s.every > 0 &&
+  if (s.steady_tolerance > 0 && steady_measures().at(s.steady_measure) == SteadyMeasure::window_means && s.steady_window > 0 && s.every > 0 &&
       s.steady_window < s.every)
     time.fail("steady_window", format_number(s.steady_window) + " is shorter than output.every = " +
                                    format_number(s.every) +
@@ -122,7 +125,7 @@ void check_scene_options(const std::map<std::string, Section>& sections, const S
     metrics.fail("ghia_re", "the Ghia et al. reference is on the unit square: domain.min = [0, 0] and domain.max = "
                             "[1, 1] (got [" + format_number(s.min[0]) + ", " + format_number(s.min[1]) + "] to [" +
                                 format_number(s.max[0]) + ", " + format_number(s.max[1]) + "])");
-  if (s.dimension != 2 && (s.wall_velocity == "linear" || s.wall_velocity == "quadratic"))
+  if (s.dimension != 2 && wall_velocity_rules().at(s.wall_velocity).make)  // an extrapolating rule
     sections.at("boundary").fail("wall_velocity", "\"" + s.wall_velocity + "\" extrapolates the shear along the wall, "
                                                   "which needs a 2D scene (scene.dimension = " +
                                                       std::to_string(s.dimension) + "); use \"mirror\"");
@@ -134,7 +137,7 @@ void check_scene_options(const std::map<std::string, Section>& sections, const S
   if (!s.wall_ghosts && !scheme.weakly_compressible)
     sections.at("boundary").fail("wall_ghosts", "false needs method.scheme = \"wcsph\" (got \"" + s.scheme +
                                                     "\": the pressure projection needs the walls' images)");
-  if (s.ppe_operator != "approximate" && !scheme.particle_poisson())
+  if (projection_options().ppe_operator.at(s.ppe_operator) != PpeOperator::approximate && !scheme.particle_poisson())
     sections.at("method").fail("ppe_operator", "\"" + s.ppe_operator + "\" needs method.scheme = \"isph\" (got \"" +
                                                    s.scheme + "\": " +
                                                    (scheme.grid ? "its pressure is solved on the grid" :

@@ -26,6 +26,8 @@
 #include "io/scene_limits.hpp"
 #include "io/scene_schema.hpp"
 #include "io/scheme_tables.hpp"
+#include "projection/poisson/poisson_solver.hpp"
+#include "projection/projection_options.hpp"
 
 namespace arksph {
 
@@ -320,18 +322,20 @@ void check_method(const Section& m, Scene& s) {
     if (scheme_traits(s.scheme).grid)
       m.fail("projection", value + " needs the particle Poisson equation: method.scheme = \"isph\" (got \"" +
                                s.scheme + "\")");
-    if (s.projection_points != "step")
+    if (projection_options().projection_points.at(s.projection_points) != ProjectionPoints::step)
       m.fail("projection", value + " projects inside f: method.projection_points = \"" + s.projection_points +
                                "\" does not apply");
-    if (s.ppe_operator != "approximate")
+    if (projection_options().ppe_operator.at(s.ppe_operator) != PpeOperator::approximate)
       m.fail("projection", value + " builds its own operator: method.ppe_operator = \"" + s.ppe_operator +
                                "\" does not apply");
   }
-  if (s.projection == "orthogonal" && s.dimension != 2)
+  if (s.projection_method() == ProjectionMethod::orthogonal && s.dimension != 2)
     m.fail("projection", "\"orthogonal\" needs a 2D scene (scene.dimension = " + std::to_string(s.dimension) + ")");
-  if (s.ppe_operator == "exact" && s.ppe_solver == "auto") s.ppe_solver = "klu";  // the only one for it
-  if (s.ppe_operator == "exact" && s.ppe_solver != "klu")
-    m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
+  if (projection_options().ppe_operator.at(s.ppe_operator) == PpeOperator::exact) {
+    s.ppe_solver = exact_operator_solver(s.ppe_solver);
+    if (s.ppe_solver.empty())
+      m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
+  }
 }
 
 // metrics.energy_budget: the potential energy -m g . r needs g constant, and a force along a

@@ -7,8 +7,10 @@
 
 #include "core/errors.hpp"
 #include "core/particle_order.hpp"
+#include "projection/correction/DensityCorrection_PozorskiWawrenczuk.hpp"
 #include "projection/divergence_operator.hpp"
 #include "projection/ppe_assembly.hpp"
+#include "projection/projection_options.hpp"
 #include "projection/velocity_correction.hpp"
 
 namespace arksph {
@@ -32,7 +34,8 @@ double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
 }
 
 double relaxation_rate(const Scene& scene, double flow_rate) {
-  const double beta = scene.projection == "orthogonal" ? scene.orthogonal_relaxation : scene.constraint_relaxation;
+  const double beta = scene.projection_method() == ProjectionMethod::orthogonal ? scene.orthogonal_relaxation
+                                                                                 : scene.constraint_relaxation;
   return beta * flow_rate;
 }
 
@@ -40,11 +43,11 @@ ConstrainedPressure::ConstrainedPressure(const Scene& scene, ParticleDomain& dom
     : domain_(domain),
       split_(scene),
       relaxation_(relaxation_rate(scene, flow_rate)),
-      zero_min_level_(scene.ppe_pressure_level == "zero_min"),
+      zero_min_level_(projection_options().ppe_pressure_level.at(scene.ppe_pressure_level) == PressureLevel::zero_min),
       poisson_(domain.poisson(scene, false)) {
-  if (scene.density_correction == "pozorski_wawrenczuk")
+  if (density_corrections().at(scene.density_correction).traits.corrects_density)
     density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate);
-  if (scene.projection == "orthogonal") {
+  if (scene.projection_method() == ProjectionMethod::orthogonal) {
     if (split_.active())
       throw InputError(scene.source + ": method.projection = \"orthogonal\" does not take fluid.body_force with walls yet "
                        "(the wall flux of the body force is not on its pressure space): use \"constrained\"");

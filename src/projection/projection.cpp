@@ -10,6 +10,7 @@
 #include "core/particles.hpp"
 #include "core/scheme.hpp"
 #include "projection/ppe_assembly.hpp"
+#include "projection/projection_options.hpp"
 #include "projection/velocity_correction.hpp"
 
 namespace arksph {
@@ -55,7 +56,7 @@ std::string automatic_body_force_pressure(const Scene& s) {
 
 const std::vector<Param>& projection_params() {
   static const std::vector<Param> params = {
-      choice("method.projection", "cummins_rudman").choices({"cummins_rudman", "constrained", "orthogonal"})
+      choice("method.projection", "cummins_rudman").choices(projection_methods().names())
           .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order; "
                "orthogonal: as constrained, with an idempotent (orthogonal) projection on a coarse pressure space (docs/methods/isph.md)")
           .to(&Scene::projection),
@@ -70,20 +71,20 @@ const std::vector<Param>& projection_params() {
       number("method.constraint_relaxation", 1.0).in(at_least(0))
           .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
           .to(&Scene::constraint_relaxation),
-      choice("method.ppe_operator", "approximate").choices({"approximate", "exact"})
+      choice("method.ppe_operator", "approximate").choices(projection_options().ppe_operator.names())
           .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; scheme isph with klu only)")
           .to(&Scene::ppe_operator),
-      choice("method.ppe_divergence", "auto").choices({"cummins_rudman", "difference"})
+      choice("method.ppe_divergence", "auto").choices(projection_options().ppe_divergence.names())
           .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts; "
                "auto: difference for isph-gpps, cummins_rudman for isph")
           .automatic(automatic_ppe_divergence).to(&Scene::ppe_divergence),
-      choice("method.ppe_pressure_level", "auto").choices({"zero_mean", "zero_min"})
+      choice("method.ppe_pressure_level", "auto").choices(projection_options().ppe_pressure_level.names())
           .doc("free level of P of the Neumann problem: zero mean, or zero minimum (P >= 0, so C&R eq. 11 never attracts); "
                "auto: zero_min")
           .automatic(automatic_ppe_pressure_level).to(&Scene::ppe_pressure_level),
       number("method.ppe_pressure_offset", 0.0).in(at_least(0))
           .doc("constant added to P after the level (a background pressure)").to(&Scene::ppe_pressure_offset),
-      choice("method.body_force_pressure", "auto").choices({"modified", "split"})
+      choice("method.body_force_pressure", "auto").choices(body_force_pressures().names())
           .doc("a constant body force g along walled axes: modified: the pressure equation solves for P = p - rho0 g . r "
                "(one density; a tank at rest stays exactly at rest); split: g in the momentum equation, its wall flux as "
                "the pressure's Neumann data (C&R's p); auto: modified where it applies, split otherwise")
@@ -96,7 +97,7 @@ const std::vector<Param>& projection_time_params() {
   static const std::vector<Param> params = {
       flag("method.centre_positions", true).doc("positions centred in time (Cummins & Rudman 1999 eq. 12)")
           .to(&Scene::centre_positions),
-      choice("method.projection_points", "step").choices({"step", "stages"})
+      choice("method.projection_points", "step").choices(projection_options().projection_points.names())
           .doc("project after each accepted step (C&R), or also after every ERK stage")
           .to(&Scene::projection_points),
   };
@@ -107,9 +108,9 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
     : domain_(std::move(domain)),
       split_(scene),
       centre_positions_(scene.centre_positions),
-      exact_operator_(scene.ppe_operator == "exact"),
-      difference_divergence_(scene.ppe_divergence == "difference"),
-      zero_min_level_(scene.ppe_pressure_level == "zero_min"),
+      exact_operator_(projection_options().ppe_operator.at(scene.ppe_operator) == PpeOperator::exact),
+      difference_divergence_(projection_options().ppe_divergence.at(scene.ppe_divergence) == PpeDivergence::difference),
+      zero_min_level_(projection_options().ppe_pressure_level.at(scene.ppe_pressure_level) == PressureLevel::zero_min),
       free_surface_(!scene.fluid_region.empty()),
       surface_threshold_(free_surface_threshold(scene.dimension)),
       pressure_offset_(scene.ppe_pressure_offset),
@@ -119,9 +120,11 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
   else
     poisson_ = domain_->poisson(scene, exact_operator_);
   // The constrained projection carries the correction inside f (ConstrainedPressure).
-  if (scene.density_correction != "none" && !scene.pressure_in_f()) correction_ = std::make_unique<DensityCorrection>(scene, *domain_);
+  if (density_corrections().at(scene.density_correction).traits.corrects_density && !scene.pressure_in_f())
+    correction_ = std::make_unique<DensityCorrection>(scene, *domain_);
   // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
-  slip_origin_ = split_.active() && scene.projection_points == "step" && !scene.pressure_in_f();
+  const bool after_step = projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::step;
+  slip_origin_ = split_.active() && after_step && !scene.pressure_in_f();
   if (scene.pressure_in_f()) constrained_ = std::make_unique<ConstrainedPressure>(scene, *domain_, flow_rate);
 }
 

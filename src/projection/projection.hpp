@@ -28,6 +28,7 @@
 #include "projection/grid/ProjectionGrid_Szewc2012.hpp"
 #include "projection/body_force_split.hpp"
 #include "projection/particle_domain.hpp"
+#include "projection/projection_options.hpp"
 #include "rhs/pressure_gravity.hpp"
 
 namespace arksph {

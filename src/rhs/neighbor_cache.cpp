@@ -4,10 +4,16 @@
 
 namespace arksph {
 
+const Option<NeighborStorage>& neighbor_storages() {
+  static const Option<NeighborStorage> o("method.neighbor_storage", {
+      {"pairs", NeighborStorage::pairs}, {"candidates", NeighborStorage::candidates}});
+  return o;
+}
+
 NeighborCache::NeighborCache(const Scene& scene, double support_radius)
     // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
     : skin_(0.15 * support_radius),
-      lean_(scene.neighbor_storage == "candidates"),
+      lean_(neighbor_storages().at(scene.neighbor_storage) == NeighborStorage::candidates),
       sweep_(scene.force_sweep) {}
 
 void NeighborCache::rebuild(const FluidFields& f) {

@@ -16,12 +16,18 @@
 
 #include <omp.h>
 
+#include "core/option.hpp"
 #include "core/scene.hpp"
 #include "neighbors/cell_list.hpp"
 #include "neighbors/neighborhood.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
+
+// method.neighbor_storage: the kernel values stored per pair, or only the candidates (the key is
+// declared in io/scene_keys.cpp with these values as its choices).
+enum class NeighborStorage { pairs, candidates };
+const Option<NeighborStorage>& neighbor_storages();
 
 // Who reads f.pairs after a neighbour refresh: nobody, one walk, or several walks.
 enum class PairUse { none, once, repeated };

@@ -34,10 +34,16 @@ PressureGravity walled_constant_force(const Scene& scene) {
 }
 }  // namespace
 
+const Option<BodyForcePressure>& body_force_pressures() {
+  static const Option<BodyForcePressure> o("method.body_force_pressure", {
+      {"modified", BodyForcePressure::modified}, {"split", BodyForcePressure::split}});
+  return o;
+}
+
 bool modified_pressure_applies(const Scene& scene) { return walled_constant_force(scene).active; }
 
 PressureGravity pressure_gravity(const Scene& scene) {
-  if (scene.body_force_pressure != "modified") return {};
+  if (body_force_pressures().at(scene.body_force_pressure) != BodyForcePressure::modified) return {};
   const PressureGravity out = walled_constant_force(scene);
   if (!out.active)
     throw InputError(scene.source + ": method.body_force_pressure = \"modified\" needs a projection scheme, one fluid "

@@ -25,6 +25,9 @@ Part<CompressibleTermsFactory> density_diffusion_none();
 Part<CompressibleTermsFactory> density_diffusion_delta_sph();
 Part<TermFactory> wall_force_none();
 Part<TermFactory> wall_force_lennard_jones();
+AutomaticRule automatic_density_mode();
+AutomaticRule automatic_density_diffusion();
+AutomaticRule automatic_regularisation();
 
 const Registry<TermFactory>& viscosity_models() {
   static const Registry<TermFactory> r("viscosity_model", "method.viscosity_model", {
@@ -67,7 +70,7 @@ const Registry<TermFactory>& density_modes() {
   static const Registry<TermFactory> r("density_mode", "method.density_mode", {
       density_continuity(),
       density_summation(),
-  });
+  }, {}, automatic_density_mode());
   return r;
 }
 
@@ -76,7 +79,7 @@ const Registry<TermFactory>& regularisations() {
       regularisation_none(),
       regularisation_shifting(),
       regularisation_transport_velocity(),
-  });
+  }, {}, automatic_regularisation());
   return r;
 }
 
@@ -84,7 +87,7 @@ const Registry<CompressibleTermsFactory>& density_diffusions() {
   static const Registry<CompressibleTermsFactory> r("density_diffusion", "method.density_diffusion", {
       density_diffusion_none(),
       density_diffusion_delta_sph(),
-  });
+  }, {}, automatic_density_diffusion());
   return r;
 }
 

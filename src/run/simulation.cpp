@@ -60,7 +60,7 @@ void print_run_header(const Scene& scene, const Model& model) {
   std::printf("  integrator %s, %s, end time %g\n", method.c_str(), stepping.c_str(), scene.end);
   if (scene.steady_tolerance > 0) {  // diagnostics/steady_state.hpp
     char window[96] = "the latest output interval";
-    if (scene.steady_window > 0 && scene.steady_measure == "window_means")
+    if (scene.steady_window > 0 && steady_measures().at(scene.steady_measure) == SteadyMeasure::window_means)
       std::snprintf(window, sizeof window, "the means of two windows of %g of simulated time", scene.steady_window);
     else if (scene.steady_window > 0)
       std::snprintf(window, sizeof window, "every output interval of the last %g of simulated time", scene.steady_window);

@@ -11,7 +11,7 @@ TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOp
     ErkOptions o = eo;
     if (ts.after_step) {
       o.postprocess = [projection](double t, double* y) { projection->project(t, y); };
-      if (scene.projection_points == "stages")
+      if (projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::stages)
         o.postprocess_stage = [projection](double t, double* y) { projection->project_stage(t, y); };
     }
     RhsFunction f = [&rhs](double t, const double* y, double* yd) { rhs.eval(t, y, yd); };

@@ -7,15 +7,6 @@
 
 namespace arksph {
 
-namespace {
-// method.correction_solver = "auto": newton. With fixed steps of Szewc's single linear solve the
-// density error grows wherever a step moves particles by more than one solve removes; the exact
-// Jacobian removes most of it in one iteration. Measured at t = 10 on the spin-down: CV 0.0012
-// against 0.0080 (C&R's set-up), 0.00037 against 0.013 (the project's defaults). Szewc's fixed
-// point stays selectable and is what the paper cases use.
-std::string automatic_correction_solver(const Scene&) { return "newton"; }
-}  // namespace
-
 const Registry<Selected>& density_corrections() {
   static const Registry<Selected> r("density_correction", "method.density_correction", {
       {"none", "no position correction"},
@@ -25,13 +16,12 @@ const Registry<Selected>& density_corrections() {
         whole("method.correction_max_iterations", 1).in(between(1, 1000))
             .doc("correction solves per step at most (Szewc: 1)").to(&Scene::correction_max_iterations),
         choice("method.correction_solver", "auto").family("correction_solver")
-            .doc("solver of the correction's Poisson problem; auto: newton")
-            .automatic(automatic_correction_solver).to(&Scene::correction_solver),
+            .doc("solver of the correction's Poisson problem").to(&Scene::correction_solver),
         number("method.correction_relaxation", 1.0).in(above(0))
             .doc("constrained projection: the correction is the velocity kappa dr inside f (dr of eqs. 57-58), "
                  "kappa = this x U/h, the decay rate of density fluctuations; the keys above apply after a step only")
             .to(&Scene::correction_relaxation)},
-       {.schemes = {"isph", "isph-gpps"}}},
+       {.schemes = {"isph", "isph-gpps"}, .corrects_density = true}},
   });
   return r;
 }

@@ -45,6 +45,9 @@ using PoissonSolverFactory = std::unique_ptr<PoissonSolver> (*)(double tolerance
 const Registry<PoissonSolverFactory>& poisson_solvers();  // method.ppe_solver
 
 std::vector<std::string> poisson_solver_names();
+// The solver of the exact operator (C&R eq. 18, not symmetric) for method.ppe_solver = requested:
+// KLU for "auto", the requested solver if it takes a matrix that is not symmetric, else empty.
+std::string exact_operator_solver(const std::string& requested);
 // tolerance: relative residual target of iterative solvers.
 std::unique_ptr<PoissonSolver> make_poisson_solver(const std::string& name, double tolerance);
 

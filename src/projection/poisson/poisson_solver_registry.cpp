@@ -35,6 +35,11 @@ void throw_not_converged(const std::string& solver, double tolerance, const Solv
   throw NumericalFailure(text);
 }
 
+std::string exact_operator_solver(const std::string& requested) {
+  if (requested == "auto") return "klu";
+  return requested == "klu" ? requested : std::string();
+}
+
 std::vector<std::string> poisson_solver_names() { return poisson_solvers().names(); }
 
 std::unique_ptr<PoissonSolver> make_poisson_solver(const std::string& name, double tolerance) {

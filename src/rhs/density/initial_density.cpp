@@ -14,6 +14,11 @@
 
 namespace arksph {
 
+namespace {
+// initial.pressure's default: no pressure field given.
+const std::string kNoInitialPressure = "0";
+}  // namespace
+
 const std::vector<Param>& initial_density_params() {
   static const std::vector<Param> params = {
       flag("initial.hydrostatic", false).schemes({"wcsph"})
@@ -21,7 +26,7 @@ const std::vector<Param>& initial_density_params() {
                "rho0 g . (r - r_top) of a uniform body force (rho0 g (H - y) under g = (0, -g)); "
                "continuity: initial density, summation: particle masses")
           .to(&Scene::initial_hydrostatic),
-      text("initial.pressure", "0").schemes({"wcsph"}).unit("Pa")
+      text("initial.pressure", kNoInitialPressure).schemes({"wcsph"}).unit("Pa")
           .doc("wcsph: pressure p(x, y) at t = 0, an expression; the initial density is the Tait "
                "equation's for it (added to initial.hydrostatic's), so a flow that carries pressure "
                "starts without pressure waves")
@@ -66,10 +71,10 @@ struct HydrostaticPressure {
 
 void apply_initial_density(const Scene& scene, double sound_speed, ParticleSet& p) {
   // The projection schemes keep rho0 (the scene reader warns that the keys are unused there).
-  const bool given = scene.initial_pressure != "0";
+  const bool given = scene.initial_pressure != kNoInitialPressure;
   if ((!scene.initial_hydrostatic && !given) || !scheme_traits(scene.scheme).weakly_compressible) return;
   const std::string key = scene.initial_hydrostatic ? "initial.hydrostatic" : "initial.pressure";
-  if (scene.equation_of_state != "tait")
+  if (!equations_of_state().at(scene.equation_of_state).traits.tait)
     throw InputError(scene.source + ": " + key + ": needs method.equation_of_state = \"tait\"");
   std::optional<HydrostaticPressure> hydrostatic;
   if (scene.initial_hydrostatic) hydrostatic.emplace(scene, p, scene.source + ": initial.hydrostatic: ");

@@ -59,7 +59,8 @@ Part<CompressibleTermsFactory> equation_of_state_tait() {
                .doc("exponent gamma of the Tait equation (Cummins & Rudman 1999 eq. 7)").to(&Scene::tait_gamma),
            number("method.background_pressure", 0.0).in(at_least(0)).unit("Pa")
                .doc("constant added to the Tait pressure (Morris et al. 1997); keeps p > 0 at the walls")
-               .to(&Scene::background_pressure)}};
+               .to(&Scene::background_pressure)},
+          {.tait = true}};
 }
 
 }  // namespace arksph

@@ -256,7 +256,8 @@ Part<TermFactory> regularisation_shifting() {
             const Kernel kernel = make_kernel(s.kernel, h, s.dimension);
             double speed = part_param<double>(s, "method.shifting_speed");
             if (speed <= 0) speed = flow_speed(s);
-            const bool density = scheme_traits(s.scheme).weakly_compressible && s.density_mode == "continuity";
+            const bool density = scheme_traits(s.scheme).weakly_compressible &&
+                                 density_modes().at(s.density_mode).traits.adds_state("density");
             const double coefficient = part_param<double>(s, "method.shifting_coefficient");
             const double anti_clump = part_param<double>(s, "method.shifting_anti_clumping");
             auto term = std::make_unique<Shifting>(coefficient, speed, part_param<double>(s, "method.shifting_limit"),

@@ -87,7 +87,8 @@ Part<TermFactory> regularisation_transport_velocity() {
             const double h = s.h_over_dx * s.spacing;
             double speed = part_param<double>(s, "method.transport_speed");
             if (speed <= 0) speed = flow_speed(s);
-            const bool density = scheme_traits(s.scheme).weakly_compressible && s.density_mode == "continuity";
+            const bool density = scheme_traits(s.scheme).weakly_compressible &&
+                                 density_modes().at(s.density_mode).traits.adds_state("density");
             return std::make_unique<TransportVelocity>(part_param<double>(s, "method.transport_coefficient") * h * speed,
                                                        density);
           },
@@ -95,7 +96,8 @@ Part<TermFactory> regularisation_transport_velocity() {
                .doc("A of the background-pressure velocity du = -A h U sum_b (V_a^2 + V_b^2)/(2 V_a) grad W "
                     "(Adami et al. 2013 eq. 13 with dt p_b / rho = A h U)"),
            number("method.transport_speed", 0.0).in(at_least(0)).unit("m/s")
-               .doc("U of the transport velocity (0: the flow speed, the largest initial or wall speed)")}};
+               .doc("U of the transport velocity (0: the flow speed, the largest initial or wall speed)")},
+          {.quadratic_walls = true}};
 }
 
 }  // namespace arksph

@@ -35,13 +35,12 @@ def measured(name):
 
 def front_and_height(run_dir):
     run = read_run(run_dir)
-    dx = float(run.summary["spacing"]) if run.summary and "spacing" in run.summary else None
+    first = run.frame(0)["Points"][:, 1]
+    dx = np.diff(np.unique(np.round(first, 9)))[0]  # the lattice spacing: the first frame's rows
     T, Z, Hl = [], [], []
     for i in range(len(run)):
         f = run.frame(i)
         x, y = f["Points"][:, 0], f["Points"][:, 1]
-        if dx is None:  # the lattice spacing from the first frame's nearest rows
-            dx = np.diff(np.unique(np.round(y, 9)))[0]
         T.append(f["time"] * np.sqrt(2 * G / A))
         Z.append(x[y < 2 * dx].max() / A)
         Hl.append(y[x < 2 * dx].max() / A)

@@ -6,7 +6,7 @@
 
 #include "core/errors.hpp"
 #include "distributed/halo_poisson.hpp"
-#include "distributed/rank_verdict.hpp"
+#include "parallel/agreement.hpp"
 
 namespace arksph::distributed {
 
@@ -17,7 +17,7 @@ void HaloDomain::refresh(double t, const double* y) {
   } catch (const NumericalFailure& e) {
     refreshed = {3, e.what()};
   }
-  refreshed = agree(comm_, refreshed);
+  refreshed = parallel::agree(comm_, refreshed);
   if (refreshed.code) throw NumericalFailure(refreshed.message);
 }
 

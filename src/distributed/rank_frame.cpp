@@ -1,112 +1,61 @@
 #include "distributed/rank_frame.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
-#include "io/frame_order.hpp"
-#include "io/vtp_writer.hpp"
+#include "parallel/join_by_id.hpp"
 
 namespace arksph::distributed {
 
-RankFrame::RankFrame(double t, const HaloRhs& f, const RankParticles& mine, const parallel::Domain& domain,
-                     const double* pressure, const std::vector<double>& number_density) {
-  const FluidFields& ff = f.evaluator().fields();
-  const std::size_t n = mine.size();
-  const int dim = mine.index().dim;
-  x_.resize(n);
-  y_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) {
-    double p[3] = {ff.x[a], dim == 2 ? ff.y[a] : 0.0, 0.0};
-    domain.wrap(p);
-    x_[a] = p[0];
-    y_[a] = p[1];
-  }
-  rho_sum_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) rho_sum_[a] = ff.m[a] * number_density[a];  // Szewc eq. 21
-  const auto& phase_field = mine.fields().field[static_cast<std::size_t>(mine.index().phase())];
-  phase_.assign(phase_field.begin(), phase_field.end());
-  frame_.dimension = dim;
-  frame_.smoothing_length = f.evaluator().kernel().h();
-  frame_.n = n;
-  frame_.time = t;
-  frame_.x = x_.data();
-  frame_.y = dim == 2 ? y_.data() : nullptr;
-  frame_.u = ff.u.data();
-  frame_.v = dim == 2 ? ff.v.data() : nullptr;
-  frame_.pressure = pressure ? pressure : ff.p.data();
-  frame_.density = ff.rho.data();
-  frame_.summation_density = rho_sum_.data();
-  frame_.mass = ff.m.data();
-  frame_.id = mine.ids().data();
-  frame_.phase = phase_.data();
-}
-
-void RankFrame::write_piece(const std::string& path) const { write_vtp(path, FrameInIdOrder(frame_).frame()); }
-
 namespace {
-FrameRow row_of(const Frame& f, std::size_t a) {
+constexpr std::size_t kRowValues = 9;  // phase, x, y, u, v, p, rho, rho_sum, m
+void row_of(const Frame& f, std::size_t a, double* row) {
   const bool two_d = f.dimension == 2;
-  return {f.id[a],          f.phase[a],       0,      f.x[a],       two_d ? f.y[a] : 0.0,     f.u[a],
-          two_d ? f.v[a] : 0.0, f.pressure[a], f.density[a], f.summation_density[a], f.mass[a]};
+  const double values[kRowValues] = {static_cast<double>(f.phase[a]), f.x[a], two_d ? f.y[a] : 0.0, f.u[a],
+                                     two_d ? f.v[a] : 0.0, f.pressure[a], f.density[a], f.summation_density[a],
+                                     f.mass[a]};
+  std::copy(values, values + kRowValues, row);
 }
 }  // namespace
 
-std::vector<FrameRow> frame_rows(const Frame& mine) {
-  std::vector<FrameRow> rows(mine.n);
-  for (std::size_t a = 0; a < mine.n; ++a) rows[a] = row_of(mine, a);
-  return rows;
+JoinedFrame::Copy::Copy(const Frame& mine) : frame(mine), id(mine.id, mine.id + mine.n), values(mine.n * kRowValues) {
+  for (std::size_t a = 0; a < mine.n; ++a) row_of(mine, a, values.data() + a * kRowValues);
+  frame.id = id.data();
 }
 
 JoinedFrame::JoinedFrame(const parallel::Communicator& comm, const Frame& mine, std::size_t n) {
-  join(comm, mine.n, [&](std::size_t a) { return row_of(mine, a); }, mine.dimension, mine.time, n);
+  join(comm, mine, [&](std::size_t a, double* row) { row_of(mine, a, row); }, n);
 }
 
-JoinedFrame::JoinedFrame(const parallel::Communicator& comm, const std::vector<FrameRow>& mine, int dimension,
-                         double time, std::size_t n) {
-  join(comm, mine.size(), [&](std::size_t a) { return mine[a]; }, dimension, time, n);
+JoinedFrame::JoinedFrame(const parallel::Communicator& comm, const Copy& mine, std::size_t n) {
+  join(comm, mine.frame, [&](std::size_t a, double* row) {
+    std::copy_n(mine.values.data() + a * kRowValues, kRowValues, row);
+  }, n);
 }
 
 template <class Row>
-void JoinedFrame::join(const parallel::Communicator& comm, std::size_t count, Row&& row, int dimension, double time,
-                       std::size_t n) {
+void JoinedFrame::join(const parallel::Communicator& comm, const Frame& mine, Row&& row, std::size_t n) {
   const bool root = comm.rank() == 0;
-  const bool two_d = dimension == 2;
-  frame_.dimension = dimension;
-  frame_.time = time;
+  const bool two_d = mine.dimension == 2;
+  frame_.dimension = mine.dimension;
+  frame_.time = mine.time;
   if (root) {
     for (auto* v : {&x_, &y_, &u_, &v_, &p_, &rho_, &rho_sum_, &m_}) v->resize(n);
     id_.assign(n, -1);
     phase_.resize(n);
   }
-  const auto rounds = static_cast<std::int64_t>((count + kJoinRows - 1) / kJoinRows);
-  const std::int64_t all_rounds = comm.max(rounds);
-  std::size_t received = 0;
-  std::vector<FrameRow> chunk;
-  for (std::int64_t r = 0; r < all_rounds; ++r) {
-    const std::size_t first = std::min(count, static_cast<std::size_t>(r) * kJoinRows);
-    const std::size_t last = std::min(count, first + kJoinRows);
-    chunk.clear();
-    for (std::size_t a = first; a < last; ++a) chunk.push_back(row(a));
-    const std::vector<FrameRow> all = comm.gatherv(chunk, 0);
-    received += all.size();
-    for (const FrameRow& w : all) {
-      if (w.id < 0 || static_cast<std::size_t>(w.id) >= n)
-        throw std::logic_error("joined frame: particle id out of range");
-      const auto k = static_cast<std::size_t>(w.id);
-      id_[k] = w.id;
-      phase_[k] = w.phase;
-      x_[k] = w.x;
-      y_[k] = w.y;
-      u_[k] = w.u;
-      v_[k] = w.v;
-      p_[k] = w.p;
-      rho_[k] = w.rho;
-      rho_sum_[k] = w.rho_sum;
-      m_[k] = w.m;
-    }
-  }
+  parallel::join_by_id(comm, mine.id, mine.n, kRowValues, n, 0, row, [&](std::size_t k, const double* w) {
+    id_[k] = static_cast<std::int64_t>(k);
+    phase_[k] = static_cast<std::int32_t>(w[0]);
+    x_[k] = w[1];
+    y_[k] = w[2];
+    u_[k] = w[3];
+    v_[k] = w[4];
+    p_[k] = w[5];
+    rho_[k] = w[6];
+    rho_sum_[k] = w[7];
+    m_[k] = w[8];
+  });
   if (!root) return;
-  if (received != n) throw std::logic_error("joined frame: the ranks hold another number of particles");
   frame_.n = n;
   frame_.x = x_.data();
   frame_.y = two_d ? y_.data() : nullptr;

@@ -1,9 +1,7 @@
 #include "distributed/distributed_run.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <functional>
 #include <memory>
 #include <optional>
 
@@ -15,8 +13,8 @@
 #include "boundary/wall_reflection.hpp"
 #include "core/errors.hpp"
 #include "core/scheme.hpp"
+#include "core/seconds_since.hpp"
 #include "diagnostics/flow_metrics.hpp"
-#include "diagnostics/frame_reduction.hpp"
 #include "distributed/halo_rhs.hpp"
 #ifdef ARKSPH_WITH_HYPRE
 #include "distributed/halo_domain.hpp"
@@ -36,8 +34,6 @@
 #include "projection/projection.hpp"
 #include "run/model_run.hpp"
 #include "run/time_stepper.hpp"
-#include "run/setup.hpp"
-#include "run/state_check.hpp"
 
 namespace arksph::distributed {
 
@@ -78,16 +74,14 @@ parallel::Decomposition bisect(const parallel::CellGrid& grid, const std::vector
 // counted per cell (the same counts on every rank, which all hold y).
 parallel::Decomposition bisect_state(const parallel::CellGrid& grid, const StateLayout& layout, const double* y,
                                      int ranks, const Scene& scene) {
-  const int dim = layout.dim;
-  parallel::ParticleFields positions(dim, dim);
-  positions.resize(layout.n);
+  std::vector<std::int64_t> counts(grid.cells(), 0);
   for (std::size_t a = 0; a < layout.n; ++a) {
     double x[3] = {0, 0, 0};
-    for (int k = 0; k < dim; ++k) x[k] = y[layout.pos(k) + a];
+    for (int k = 0; k < layout.dim; ++k) x[k] = y[layout.pos(k) + a];
     grid.domain().wrap(x);
-    for (int k = 0; k < dim; ++k) positions.field[static_cast<std::size_t>(k)][a] = x[k];
+    ++counts[grid.cell_of(x)];
   }
-  return bisect(grid, parallel::count_per_cell(grid, positions), ranks, scene);
+  return bisect(grid, counts, ranks, scene);
 }
 
 }  // namespace
@@ -151,10 +145,7 @@ class RankProcess final : public RunProcess {
   std::string frame_form() const override {
     return scene_.pieces ? " (a frame piece per rank)" : " (frames joined on rank 0)";
   }
-  void initial_state(Model&) override {
-    deal_initial_state();
-    initial_fields();
-  }
+  void initial_state(Model&) override;
   double initial_acceleration() const override { return accel0_; }
   long start_stepping(double t0, const Checkpoint* restart, const StepStats& counters) override;
   int pieces() const override { return pieces_ ? ranks_ : 0; }
@@ -176,7 +167,7 @@ class RankProcess final : public RunProcess {
   // The rank's own particles' power at a field refresh of the state.
   double viscous_power(double t) override {
     f_->eval(t, integrator().state(), nullptr);
-    return f_->viscous_power(mine_->size());
+    return f_->evaluator().viscous_power(mine_->size());
   }
   FrameSource frame_source(double t) override;
   void write_rows(const FrameDiagnostics& diag, const StepStats& stats, const Frame& mine, RunOutput* out) override;
@@ -201,10 +192,8 @@ class RankProcess final : public RunProcess {
   void report(RunTotals& totals) override;
 
  private:
-  void deal_initial_state();
   void initial_fields();
   void make_projection();
-  void set_up_stepping(bool restarting);
   void start_integrator(double t, double h, const StepStats& counters);
   void sort_mine() {
     if (scene_.reorder_every > 0) mine_->sort_by_cell(scene_.min.data(), model_->rhs->kernel().radius());
@@ -253,20 +242,16 @@ void RankProcess::built(Model& model) {
 #endif
 }
 
-// The particles dealt to the ranks from the whole initial state, sorted by cell as one process
-// sorts its own at t = 0 and at its re-sorts (method.reorder_every > 0; 0 keeps the dealt order, as
-// one process keeps its own). No rank evaluates the whole model: the initial state, its
-// evaluator's particle data and the model's initial positions go now (a new deal reads only masses,
-// densities, phases and ids; the initial velocities stay until the state checker has read them).
-void RankProcess::deal_initial_state() {
+// The particles dealt to the ranks from the whole initial state, and their fields at t = 0 (below).
+// No rank evaluates the whole model: the initial state, its evaluator's particle data and the
+// model's initial positions go now (a new deal reads only masses, densities, phases and ids; the
+// initial velocities stay until the state checker has read them).
+void RankProcess::initial_state(Model&) {
   RhsEvaluator& rhs = *model_->rhs;
-  const StateLayout& layout = rhs.layout();
-  std::vector<double> y0(layout.size());
+  std::vector<double> y0(rhs.layout().size());
   rhs.initial_state(y0.data());
   grid_.emplace(domain_of(scene_), rhs.kernel().radius());
-  together([&] { decomposition_.emplace(bisect_state(*grid_, layout, y0.data(), ranks_, scene_)); });
-  mine_.emplace(model_->particles, layout, y0.data(), *decomposition_, comm_.rank());
-  sort_mine();
+  deal(y0.data());
   std::vector<double>().swap(y0);
   // The constrained projection's rates read the whole model's initial speeds.
   flow_ = scene_.pressure_in_f() ? flow_rate(scene_, rhs) : 0.0;
@@ -274,6 +259,7 @@ void RankProcess::deal_initial_state() {
   for (auto* v : {&model_->particles.init_pos[0], &model_->particles.init_pos[1]}) std::vector<double>().swap(*v);
   f_.emplace(scene_, *model_, comm_, *mine_);
   f_->set_decomposition(*decomposition_);
+  initial_fields();
 }
 
 // The initial state's fields on the ranks: the number density d0 of every particle by id (C&R's CV,
@@ -301,14 +287,13 @@ void RankProcess::make_projection() {
   model_->projection = std::make_unique<Projection>(
       scene_, std::make_unique<HaloDomain>(comm_, *f_, *mine_, model_->particles.id[0]), flow_);
   projection_ = model_->projection.get();
-  if (root_ && scheme_traits(scene_.scheme).grid) {
+  if (!root_) return;
+  if (scheme_traits(scene_.scheme).grid)
     std::printf("  pressure Poisson equation: on the grid (KLU), the cell sums of every rank's particles all-reduced\n");
-    std::fflush(stdout);
-  } else if (root_) {
+  else
     std::printf("  pressure Poisson equation: hypre PCG + BoomerAMG over the ranks, tolerance %g "
                 "(method.ppe_solver = %s applies to one process)\n", scene_.ppe_tolerance, scene_.ppe_solver.c_str());
-    std::fflush(stdout);
-  }
+  std::fflush(stdout);
 #endif
 }
 
@@ -325,35 +310,33 @@ long RankProcess::start_stepping(double t0, const Checkpoint* restart, const Ste
   place_.resize(model_->particles.n);
   for (std::size_t i = 0; i < place_.size(); ++i) place_[static_cast<std::size_t>(model_->particles.id[i])] = i;
   make_projection();
-  set_up_stepping(restart != nullptr);
-  start_integrator(t0, restart ? restart->next_step : 0.0, counters);
-  fewest_ = -comm_.max(-static_cast<std::int64_t>(mine_->size()));
-  return 1;  // the evaluation at t = 0 for the number density
-}
-
-// The particles of a whole state y (the model's layout) dealt to the ranks anew: a new bisection,
-// the rank's particles sorted by cell; the projection numbers its rows anew.
-void RankProcess::deal(const double* y) {
-  const StateLayout& layout = model_->rhs->layout();
-  together([&] { decomposition_.emplace(bisect_state(*grid_, layout, y, ranks_, scene_)); });
-  *mine_ = RankParticles(model_->particles, layout, y, *decomposition_, comm_.rank());
-  sort_mine();
-  f_->set_decomposition(*decomposition_);
-  if (projection_) projection_->particles_moved();
-}
-
-void RankProcess::set_up_stepping(bool restarting) {
   eo_ = integrator_options(scene_);
   eo_.state_vector = mpi_state_vector(comm_.comm());
   eo_.any_rank = [this](bool local) { return comm_.max(static_cast<std::int64_t>(local)) > 0; };
   eo_.describe_entry = [this](std::size_t i, double v) { return describe_rhs_entry(mine_->layout(), mine_->ids(), i, v); };
   eo_.stability = [this](double, const double* yl) { return stable(yl); };
   // A constrained projection starts from a divergence-free velocity (a restart already is).
-  if (projection_ && projection_->constrained() && !restarting) {
+  if (projection_ && projection_->constrained() && !restart) {
     std::vector<double> y = mine_->state();
     projection_->project_initial(0.0, y.data());
     mine_->load(y.data());
   }
+  start_integrator(t0, restart ? restart->next_step : 0.0, counters);
+  fewest_ = -comm_.max(-static_cast<std::int64_t>(mine_->size()));
+  return 1;  // the evaluation at t = 0 for the number density
+}
+
+// The particles of a whole state y (the model's layout) dealt to the ranks anew: a new bisection,
+// the rank's particles sorted by cell as one process sorts its own at t = 0 and at its re-sorts
+// (method.reorder_every > 0; 0 keeps the dealt order, as one process keeps its own); the projection
+// numbers its rows anew.
+void RankProcess::deal(const double* y) {
+  const StateLayout& layout = model_->rhs->layout();
+  together([&] { decomposition_.emplace(bisect_state(*grid_, layout, y, ranks_, scene_)); });
+  mine_.emplace(model_->particles, layout, y, *decomposition_, comm_.rank());  // in place: f_ keeps it
+  sort_mine();
+  if (f_) f_->set_decomposition(*decomposition_);
+  if (projection_) projection_->particles_moved();
 }
 
 // A new integrator at (t, the rank's state) with first step h (0: the stability limit) and the
@@ -465,14 +448,8 @@ void RankProcess::migrate(double at) {
   const auto t0 = Clock::now();
   const double h = integrator().next_step();
   mine_->load(integrator().state());
+  mine_->wrap_seen(grid_->domain());
   parallel::ParticleFields& F = mine_->fields();
-  const RankFieldIndex& ix = mine_->index();
-  for (std::size_t a = 0; a < F.size(); ++a) {
-    double x[3] = {0, 0, 0};
-    for (int k = 0; k < ix.dim; ++k) x[k] = F.field[static_cast<std::size_t>(ix.state_pos(k))][a];
-    grid_->domain().wrap(x);
-    for (int k = 0; k < ix.dim; ++k) F.field[static_cast<std::size_t>(ix.seen(k))][a] = x[k];
-  }
   std::vector<std::int64_t> counts = parallel::count_per_cell(*grid_, F);
   comm_.sum_in_place(counts);
   decomposition_.emplace(bisect(*grid_, counts, ranks_, scene_));
@@ -484,7 +461,7 @@ void RankProcess::migrate(double at) {
   erk().resize(mine_->state(), at, h);
   count_fewest();
   ++migrations_;
-  migration_seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
+  migration_seconds_ += seconds_since(t0);
 }
 
 // summary.json: what the decomposition did.

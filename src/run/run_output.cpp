@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/seconds_since.hpp"
 #include "diagnostics/exact_velocity.hpp"
 #include "diagnostics/frame_reduction.hpp"
 #include "diagnostics/poiseuille.hpp"
@@ -18,9 +19,6 @@ namespace arksph {
 
 namespace {
 using clock_type = std::chrono::steady_clock;
-double since(clock_type::time_point t0) {
-  return std::chrono::duration<double>(clock_type::now() - t0).count();
-}
 double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 }  // namespace
 
@@ -138,7 +136,7 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
       rows.push_back({k * hist.bin_width, (k + 1) * hist.bin_width, static_cast<double>(hist.counts[k])});
     write_csv(scene_.directory + "/nn_histogram.csv", {"r_over_dx_lo", "r_over_dx_hi", "count"}, rows);
   }
-  diagnostic_seconds_ += since(t0);
+  diagnostic_seconds_ += seconds_since(t0);
 
   t0 = clock_type::now();
   csv_.row(row);
@@ -159,7 +157,7 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
     pvd_->add(t, name);
   }
   ++frames_;
-  output_seconds_ += since(t0);
+  output_seconds_ += seconds_since(t0);
 }
 
 void RunOutput::finish(const RunResult& result, const StepStats& stats, const RunTotals& totals) {

@@ -6,7 +6,7 @@
 
 #include "core/errors.hpp"
 #include "distributed/halo_poisson.hpp"
-#include "distributed/rank_verdict.hpp"
+#include "parallel/agreement.hpp"
 
 namespace arksph::distributed {
 
@@ -17,7 +17,7 @@ void HaloDomain::refresh(double t, const double* y) {
   } catch (const NumericalFailure& e) {
     refreshed = {3, e.what()};
   }
-  refreshed = agree(comm_, refreshed);
+  refreshed = parallel::agree(comm_, refreshed);
   if (refreshed.code) throw NumericalFailure(refreshed.message);
 }
 
@@ -34,7 +34,7 @@ double HaloDomain::level(const std::vector<double>& p, bool zero_min) const {
 
 std::vector<double> HaloDomain::with_halo(const std::vector<double>& own) const {
   std::vector<double> all(own);
-  const std::vector<double> copies = f_.halo_values(own);
+  const std::vector<double> copies = std::move(f_.halo_values({&own}).front());
   all.insert(all.end(), copies.begin(), copies.end());
   return all;
 }
@@ -60,7 +60,7 @@ CorrectionSpan HaloDomain::correction_span() const {
   s.own = owned_.layout().n;
   s.sum = [this](double v) { return comm_.sum(v); };
   s.extend = [this](std::vector<double>& v) {
-    const std::vector<double> copies = f_.halo_values(v);
+    const std::vector<double> copies = std::move(f_.halo_values({&v}).front());
     v.insert(v.end(), copies.begin(), copies.end());
     if (v.size() != f_.evaluator().fields().n_real)
       throw std::logic_error("density correction: the halo values do not match the evaluator's points");

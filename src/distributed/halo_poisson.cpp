@@ -25,7 +25,7 @@ SolveReport HaloPoisson::solve(const FluidFields& f, const std::vector<double>& 
     numbered_ = true;
   }
   // The halo copies' rows (the halo may have been exchanged anew by any f since the last solve).
-  const std::vector<double> halo_rows = f_.halo_values(own_rows_);
+  const std::vector<double> halo_rows = std::move(f_.halo_values({&own_rows_}).front());
   row_of_.resize(n + halo_rows.size());
   for (std::size_t a = 0; a < n; ++a) row_of_[a] = range_.first + static_cast<std::int64_t>(a);
   for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);

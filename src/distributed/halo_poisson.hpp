@@ -9,6 +9,7 @@
 // starts hypre cold (a new hierarchy), as after a migration or a new deal.
 #pragma once
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,8 +18,6 @@
 #include "distributed_ppe/hypre_poisson.hpp"
 #include "distributed_ppe/ppe_rows.hpp"
 #include "parallel/communicator.hpp"
-#include <stdexcept>
-
 #include "projection/particle_domain.hpp"
 
 namespace arksph::distributed {

@@ -5,15 +5,13 @@
 #include <cmath>
 
 #include "core/resize_with_headroom.hpp"
+#include "core/seconds_since.hpp"
 #include "kernels/kernel.hpp"
 #include "rhs/terms.hpp"
 
 namespace arksph::distributed {
 
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 // The neighbourhoods a particle's sums depend on: its own and its neighbours' (see the header).
 constexpr double kHaloSupports = 2.0;
 // The Verlet skin of the neighbour search (rhs/neighbor_cache.cpp), as a fraction of the support.
@@ -33,6 +31,7 @@ HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communi
   for (int k = 0; k < ix.dim; ++k) update_fields_.push_back(ix.vel(k));
   if (ix.density) update_fields_.push_back(ix.rho());
   if (ix.energy) update_fields_.push_back(ix.e());
+  blocks_ = ix.state_blocks(true);
   offset_.resize(static_cast<std::size_t>(ix.dim));
   ref_.resize(static_cast<std::size_t>(ix.dim));
 }
@@ -49,18 +48,13 @@ void HaloRhs::exchange() {
   const parallel::Domain& domain = decomposition_->grid().domain();
   const std::size_t n = F.size();
   parallel::Box mine = decomposition_->box(comm_.rank());
-  double x[3] = {0, 0, 0};
-  for (std::size_t a = 0; a < n; ++a) {
-    for (int k = 0; k < ix.dim; ++k) x[k] = F.field[static_cast<std::size_t>(ix.state_pos(k))][a];
-    domain.wrap(x);
-    for (int k = 0; k < ix.dim; ++k) {
-      F.field[static_cast<std::size_t>(ix.seen(k))][a] = x[k];
-      if (std::isfinite(x[k])) {
-        mine.lo[k] = std::min(mine.lo[k], x[k]);
-        mine.hi[k] = std::max(mine.hi[k], x[k]);
+  owned_.wrap_seen(domain);
+  for (int k = 0; k < ix.dim; ++k)
+    for (double x : F.field[static_cast<std::size_t>(ix.seen(k))])
+      if (std::isfinite(x)) {
+        mine.lo[k] = std::min(mine.lo[k], x);
+        mine.hi[k] = std::max(mine.hi[k], x);
       }
-    }
-  }
   for (int k = 0; k < ix.dim; ++k) {
     const auto& seen = F.field[static_cast<std::size_t>(ix.seen(k))];
     const auto& state = F.field[static_cast<std::size_t>(ix.state_pos(k))];
@@ -77,11 +71,10 @@ void HaloRhs::exchange() {
   seconds_.exchange += seconds_since(t0);
 }
 
-// The evaluator over the rank's particles, then the halo copies: built at the first exchange, and
-// given the new particle set at each later one (RhsEvaluator::replace_particles), which keeps the
-// storage of its fields, ghosts and neighbour list. Its neighbour list and ghosts are built anew at
-// the next eval either way, so the sums are those of a fresh evaluator. No initial positions or
-// velocities: the state comes from eval, never from RhsEvaluator::initial_state.
+// The evaluator over the rank's particles, then the halo copies, built anew at each exchange (and
+// after release_storage): its neighbour list and ghosts are built at the next eval, at the rule of
+// one process's Verlet list. No initial positions or velocities: the state comes from eval, never
+// from RhsEvaluator::initial_state.
 void HaloRhs::build_evaluator() {
   const parallel::ParticleFields& F = owned_.fields();
   const RankFieldIndex& ix = owned_.index();
@@ -106,28 +99,20 @@ void HaloRhs::build_evaluator() {
   set.id.reserve(set.n);
   for (std::uint64_t id : F.id) set.id.push_back(static_cast<std::int64_t>(id));
   for (std::uint64_t id : halo_.id) set.id.push_back(static_cast<std::int64_t>(id));
-  if (evaluator_) {
-    evaluator_->replace_particles(std::move(set));
-    evaluator_->set_derivative_count(F.size());  // the halo copies' derivatives are discarded
-    return;
-  }
+  evaluator_.reset();  // never the old and the new at once
   RhsOptions options;
   options.periodic_images = false;
   options.pairs_at_every_f = scene_.pressure_in_f();  // the constrained projection walks the pairs of each f
+  options.derivative_count = F.size();                // the halo copies' derivatives are discarded
   evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),
                                               terms_from_scene(scene_, model_.sound_speed), options);
   evaluator_->set_slip_origin(slip_on_, slip_t0_);
-  evaluator_->set_derivative_count(F.size());
 }
 
 void HaloRhs::set_slip_origin(bool on, double t0) {
   slip_on_ = on;
   slip_t0_ = t0;
   if (evaluator_) evaluator_->set_slip_origin(on, t0);
-}
-
-std::vector<double> HaloRhs::halo_values(const std::vector<double>& own) const {
-  return std::move(halo_values(std::vector<const std::vector<double>*>{&own}).front());
 }
 
 std::vector<std::vector<double>> HaloRhs::halo_values(const std::vector<const std::vector<double>*>& own) const {
@@ -179,20 +164,15 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   const auto t_eval = std::chrono::steady_clock::now();
 
   // The evaluator's state: this rank's particles, then the halo copies.
+  if (!evaluator_) build_evaluator();  // after release_storage
   const StateLayout& L = evaluator_->layout();
   resize_with_headroom(y_all_, L.size());  // the halo grows by a few copies at some exchanges
-  const auto place = [&](int field, std::size_t at) {
-    const auto& own = F.field[static_cast<std::size_t>(field)];
-    const auto& copy = halo_.field[static_cast<std::size_t>(field)];
-    std::copy(own.begin(), own.end(), y_all_.begin() + static_cast<long>(at));
-    std::copy(copy.begin(), copy.end(), y_all_.begin() + static_cast<long>(at + n));
-  };
-  for (int k = 0; k < ix.dim; ++k) {
-    place(ix.seen(k), L.pos(k));
-    place(ix.vel(k), L.vel(k));
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const auto& own = F.field[static_cast<std::size_t>(blocks_[b])];
+    const auto& copy = halo_.field[static_cast<std::size_t>(blocks_[b])];
+    std::copy(own.begin(), own.end(), y_all_.begin() + static_cast<long>(b * L.n));
+    std::copy(copy.begin(), copy.end(), y_all_.begin() + static_cast<long>(b * L.n + n));
   }
-  if (L.has_density) place(ix.rho(), L.rho());
-  if (L.has_energy) place(ix.e(), L.energy());
   if (!ydot) {  // the fields only (output.pieces, the projection), as a whole frame's refresh
     evaluator_->eval(t, y_all_.data(), nullptr);
     seconds_.evaluator += seconds_since(t_eval);
@@ -202,10 +182,6 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   evaluator_->eval(t, y_all_.data(), ydot_all_.data());
 
   // This rank's derivatives, in its own layout.
-  const StateLayout mine = owned_.layout();
-  const auto take = [&](std::size_t from, std::size_t to) {
-    std::copy(ydot_all_.begin() + static_cast<long>(from), ydot_all_.begin() + static_cast<long>(from + n), ydot + to);
-  };
   double a2 = 0;
   for (std::size_t a = 0; a < n; ++a) {
     double s = 0;
@@ -213,12 +189,8 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
     a2 = std::max(a2, s);
   }
   max_accel_ = std::sqrt(a2);
-  for (int k = 0; k < ix.dim; ++k) {
-    take(L.pos(k), mine.pos(k));
-    take(L.vel(k), mine.vel(k));
-  }
-  if (L.has_density) take(L.rho(), mine.rho());
-  if (L.has_energy) take(L.energy(), mine.energy());
+  for (std::size_t b = 0; b < blocks_.size(); ++b)
+    std::copy_n(ydot_all_.begin() + static_cast<long>(b * L.n), n, ydot + b * n);
   seconds_.evaluator += seconds_since(t_eval);
 }
 

@@ -15,9 +15,8 @@
 // from their owners, and every rank its largest displacement since the last exchange from every
 // other (HaloExchange::update_max: one all-to-all with the counts of the exchange, no other
 // collective). When some particle has moved more than skin / 2 since the last exchange, the halo is
-// exchanged anew from the current positions and the evaluator takes the new set
-// (RhsEvaluator::replace_particles: its neighbour list is built anew into the old storage, as the
-// Verlet list of one process is at the same rule). The halo rule uses
+// exchanged anew from the current positions and an evaluator is built over the new set (its
+// neighbour list built anew, as the Verlet list of one process is at the same rule). The halo rule uses
 // each rank's block of the decomposition grown around its particles' current positions, so the
 // halo stays complete however far particles have left their block since the last migration.
 //
@@ -50,17 +49,13 @@ class HaloRhs {
   double local_max_acceleration() const { return max_accel_; }
   // The evaluator of the last eval: its fields hold this rank's particles first, then the halo.
   const RhsEvaluator& evaluator() const { return *evaluator_; }
-  // sum m u . a_visc over this rank's first `count` particles at the last eval, a field refresh
-  // (RhsEvaluator::viscous_power).
-  double viscous_power(std::size_t count) { return evaluator_->viscous_power(count); }
+  RhsEvaluator& evaluator() { return *evaluator_; }
   // The state the evaluator took at the last eval, in its layout: this rank's particles, then the
   // halo copies with their owners' values (the velocities a pair loop reads at the copies).
   const double* evaluated_state() const { return y_all_.data(); }
-  // Frees the evaluator's neighbour list and fields until the next eval, which builds them anew
-  // (RhsEvaluator::release_storage): while rank 0 holds a whole frame or checkpoint.
-  void release_storage() {
-    if (evaluator_) evaluator_->release_storage();
-  }
+  // Frees the evaluator until the next eval, which builds it anew (build_evaluator): while rank 0
+  // holds a whole frame or checkpoint.
+  void release_storage() { evaluator_.reset(); }
   long exchanges() const { return exchanges_; }  // halo exchanges (each with a new neighbour list) so far
   // This rank's wall time in eval: halo exchanges (geometry, copies, the evaluator's new particle
   // set), halo updates (the all-to-all of each eval, waiting for the other ranks included) and the
@@ -69,13 +64,10 @@ class HaloRhs {
     double exchange = 0, update = 0, evaluator = 0;
   };
   const Seconds& seconds() const { return seconds_; }
-  double cutoff() const { return cutoff_; }
-  std::size_t halo_size() const { return halo_.size(); }
-  // Collective. The values `own` of this rank's particles (one each, in the rank's order) at their
-  // halo copies of the last eval, in the evaluator's order of the copies (the projection's row
-  // numbers and pressures: halo_domain.hpp). One all-to-all along the exchange's send lists.
-  std::vector<double> halo_values(const std::vector<double>& own) const;
-  // The same for several fields in one all-to-all: element k holds *own[k] at the copies.
+  // Collective. The values *own[k] of this rank's particles (one each, in the rank's order) at their
+  // halo copies of the last eval (element k), in the evaluator's order of the copies (the
+  // projection's row numbers and pressures: halo_domain.hpp). One all-to-all along the exchange's
+  // send lists.
   std::vector<std::vector<double>> halo_values(const std::vector<const std::vector<double>*>& own) const;
   // RhsEvaluator::set_slip_origin, kept for the evaluators of later exchanges (the projection's
   // body-force split: the stages of a step carry the increment (t - t0) g, projection/projection.hpp).
@@ -94,6 +86,7 @@ class HaloRhs {
   parallel::HaloExchange exchange_;
   parallel::ParticleFields halo_;
   std::vector<int> update_fields_;           // sent at every eval
+  std::vector<int> blocks_;                  // RankFieldIndex::state_blocks(true)
   std::vector<std::vector<double>> offset_;  // per axis: state position - seen position
   std::vector<std::vector<double>> ref_;     // per axis: seen positions at the exchange
   std::unique_ptr<RhsEvaluator> evaluator_;

@@ -9,6 +9,7 @@ RankParticles::RankParticles(const ParticleSet& all, const StateLayout& layout, 
   ix_.dim = layout.dim;
   ix_.density = layout.has_density;
   ix_.energy = layout.has_energy;
+  blocks_ = ix_.state_blocks(false);
   p_ = parallel::ParticleFields(ix_.dim, ix_.count());
   double x[3] = {0, 0, 0};
   const parallel::Domain& domain = decomposition.grid().domain();
@@ -41,33 +42,23 @@ StateLayout RankParticles::layout() const {
 }
 
 std::vector<double> RankParticles::state() const {
-  const StateLayout L = layout();
-  std::vector<double> y(L.size());
-  const auto copy = [&](int field, std::size_t at) {
+  const std::size_t n = size();
+  std::vector<double> y(layout().size());
+  std::size_t at = 0;
+  for (int field : blocks_) {
     const auto& f = p_.field[static_cast<std::size_t>(field)];
     std::copy(f.begin(), f.end(), y.begin() + static_cast<long>(at));
-  };
-  for (int k = 0; k < ix_.dim; ++k) {
-    copy(ix_.state_pos(k), L.pos(k));
-    copy(ix_.vel(k), L.vel(k));
+    at += n;
   }
-  if (ix_.density) copy(ix_.rho(), L.rho());
-  if (ix_.energy) copy(ix_.e(), L.energy());
   return y;
 }
 
 void RankParticles::load(const double* y) {
-  const StateLayout L = layout();
-  const auto take = [&](int field, std::size_t at) {
-    auto& f = p_.field[static_cast<std::size_t>(field)];
-    f.assign(y + at, y + at + L.n);
-  };
-  for (int k = 0; k < ix_.dim; ++k) {
-    take(ix_.state_pos(k), L.pos(k));
-    take(ix_.vel(k), L.vel(k));
+  const std::size_t n = size();
+  for (int field : blocks_) {
+    p_.field[static_cast<std::size_t>(field)].assign(y, y + n);
+    y += n;
   }
-  if (ix_.density) take(ix_.rho(), L.rho());
-  if (ix_.energy) take(ix_.e(), L.energy());
 }
 
 void RankParticles::sort_by_cell(const double* lo, double side) {
@@ -78,6 +69,15 @@ void RankParticles::sort_by_cell(const double* lo, double side) {
   permute(p_.id, from);
   for (auto& f : p_.field) permute(f, from);
   refresh_ids();
+}
+
+void RankParticles::wrap_seen(const parallel::Domain& domain) {
+  double x[3] = {0, 0, 0};
+  for (std::size_t a = 0; a < p_.size(); ++a) {
+    for (int k = 0; k < ix_.dim; ++k) x[k] = p_.field[static_cast<std::size_t>(ix_.state_pos(k))][a];
+    domain.wrap(x);
+    for (int k = 0; k < ix_.dim; ++k) p_.field[static_cast<std::size_t>(ix_.seen(k))][a] = x[k];
+  }
 }
 
 void RankParticles::refresh_ids() { ids_.assign(p_.id.begin(), p_.id.end()); }

@@ -32,6 +32,16 @@ struct RankFieldIndex {
   int rho0() const { return mass() + 1; }
   int phase() const { return mass() + 2; }
   int count() const { return mass() + 3; }
+  // The fields of the state's blocks in layout order (block b at b * n): the positions (the seen
+  // ones with `seen`, else the state's), the velocities, then the density and the energy.
+  std::vector<int> state_blocks(bool seen) const {
+    std::vector<int> b;
+    for (int k = 0; k < dim; ++k) b.push_back(seen ? this->seen(k) : state_pos(k));
+    for (int k = 0; k < dim; ++k) b.push_back(vel(k));
+    if (density) b.push_back(rho());
+    if (energy) b.push_back(e());
+    return b;
+  }
 };
 
 class RankParticles {
@@ -53,6 +63,9 @@ class RankParticles {
   std::vector<double> state() const;
   // The state fields (state positions, velocities, density, energy) from y (this rank's layout).
   void load(const double* y);
+  // The seen positions: the state's wrapped into the box along the periodic axes (at a halo
+  // exchange and before a migration).
+  void wrap_seen(const parallel::Domain& domain);
   // After a migration: the ids follow the records.
   void refresh_ids();
   // The particles re-ordered by cell of side `side` (row-major from `lo`, core/particle_order.hpp)
@@ -63,6 +76,7 @@ class RankParticles {
 
  private:
   RankFieldIndex ix_;
+  std::vector<int> blocks_;  // ix_.state_blocks(false)
   parallel::ParticleFields p_;
   std::vector<std::int64_t> ids_;
 };

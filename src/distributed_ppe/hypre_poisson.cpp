@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/seconds_since.hpp"
 
 namespace arksph::distributed_ppe {
 
@@ -40,9 +41,6 @@ void check(HYPRE_Int err, const char* what) {
   }
 }
 
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // hypre's 32-bit global indices (Debian's build has no HYPRE_BIGINT).
 HYPRE_BigInt big(GlobalRow r) {
@@ -183,10 +181,10 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
                       setup ? reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup) : keep_hierarchy, amg_->amg);
   check(HYPRE_ParCSRPCGSetup(s.pcg, A, b, x), "PCG setup");
   must_setup_ = false;
-  rep.setup_seconds = since(t0);
+  rep.setup_seconds = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   const HYPRE_Int solved = HYPRE_ParCSRPCGSolve(s.pcg, A, b, x);
-  rep.solve_seconds = since(t1);
+  rep.solve_seconds = seconds_since(t1);
   HYPRE_Int it = 0;
   HYPRE_PCGGetNumIterations(s.pcg, &it);
   rep.iterations = it;

@@ -9,17 +9,12 @@
 #include "core/particle_order.hpp"
 #include "core/particles.hpp"
 #include "core/scheme.hpp"
+#include "core/seconds_since.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "projection/projection_options.hpp"
 #include "projection/velocity_correction.hpp"
 
 namespace arksph {
-
-namespace {
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
 
 namespace {
 // method.ppe_divergence = "auto". isph-gpps: the difference form; with C&R eq. 17 the cavity blows
@@ -133,7 +128,7 @@ void Projection::constrain(const double* y, double* ydot, const double* au, cons
   const SolveReport rep = constrained_->constrain(y, ydot, au, av);
   stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
   if (gravity_.active) report(constrained_->pressure());
-  const double s = since(t0);
+  const double s = seconds_since(t0);
   stats_.seconds += s;
   stats_.solve_seconds += s;
 }
@@ -185,7 +180,7 @@ void Projection::project_stage(double t, double* y) {
   if (dt <= 0) return;  // a stage at c_i = 0 needs no projection
   const auto t0 = std::chrono::steady_clock::now();
   project_velocities(dt, t, y);
-  stats_.seconds += since(t0);
+  stats_.seconds += seconds_since(t0);
 }
 
 void Projection::project(double t, double* y) {
@@ -198,7 +193,7 @@ void Projection::project(double t, double* y) {
   // 4. Positions centred in time, C&R eq. 12, plus the step's regularisation displacement dt du_s
   // (du_s of the fields at r*, refreshed by the projection) when a regularisation part is on.
   if (centre_positions_ && y_prev_.size() == L.size()) centre_positions(L, domain_->fields(), y_prev_, dt, y);
-  stats_.seconds += since(t0);
+  stats_.seconds += seconds_since(t0);
 
   // 5. Density correction, Szewc eqs. 57-58 (timed separately).
   if (correction_) correction_->apply(t, y);
@@ -227,7 +222,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
                                      : exact_operator_ ? neumann_source_exact(f) : neumann_source(f);
     for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
   }
-  stats_.assembly_seconds += since(ta);
+  stats_.assembly_seconds += seconds_since(ta);
   if (grid_) {
     project_on_grid(f, div, dt, y);
   } else {
@@ -246,7 +241,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   const SolveReport rep = poisson_->solve(f, div, dt, solution_);
   const double assembly = poisson_->assembly_seconds() - assembly_before;
   stats_.assembly_seconds += assembly;
-  stats_.solve_seconds += since(ts) - assembly;
+  stats_.solve_seconds += seconds_since(ts) - assembly;
   stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
   // The level of P is free (Neumann walls) but matters to the symmetric gradient of eq. 11 on
   // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract), over
@@ -288,7 +283,7 @@ void Projection::project_on_grid(const FluidFields& f, const std::vector<double>
   // On ranks each deposits its own particles and the cell sums are combined: every rank solves the
   // whole grid problem and interpolates at its own particles.
   GridCorrection c = grid_->solve(f, n, div, dt, domain_->cell_combine());
-  stats_.solve_seconds += since(ts);
+  stats_.solve_seconds += seconds_since(ts);
   stats_.record_solve(1, c.refactorised, c.residual);
   pressure_ = std::move(c.pressure);
   if (zero_min_level_) {  // the grid's p has zero mean over the cells; P >= 0 over every particle

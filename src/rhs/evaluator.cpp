@@ -8,6 +8,7 @@
 #include "core/particle_order.hpp"
 #include "core/resize_with_headroom.hpp"
 #include "core/scheme.hpp"
+#include "core/seconds_since.hpp"
 #include "rhs/term_registry.hpp"
 
 namespace arksph {
@@ -19,10 +20,6 @@ constexpr std::size_t kCheapLoopParallelMin = 20000;
 // The passes that load the state and store the derivatives: about ten arrays each, in parallel
 // from this size on (BM_RhsEval, N = 2,500, 2 threads: faster than with these passes serial).
 constexpr std::size_t kLoadParallelMin = 2000;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 }  // namespace
 
 RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Kernel kernel,
@@ -114,22 +111,7 @@ void RhsEvaluator::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(implicit_v_, from);
 }
 
-void RhsEvaluator::replace_particles(ParticleSet particles) {
-  neighbors_.invalidate();  // the storage stays for the next list; the next eval rebuilds
-  particles_ = std::move(particles);
-  const std::size_t n = particles_.n;
-  layout_.n = n;
-  fields_.n_real = n;
-  fields_.rho0 = particles_.rho0;
-  fields_.dudt.assign(n, 0.0);
-  fields_.dvdt.assign(n, 0.0);
-  fields_.drhodt.assign(n, 0.0);
-  if (layout_.has_energy) fields_.dedt.assign(n, 0.0);
-  implicit_u_.clear();
-  implicit_v_.clear();
-}
-
-void RhsEvaluator::release_storage() {
+void RhsEvaluator::release_particles() {
   neighbors_.release();
   FluidFields& f = fields_;
   f.pairs = PairList{};
@@ -138,10 +120,6 @@ void RhsEvaluator::release_storage() {
     std::vector<double>().swap(*v);
   std::vector<std::uint32_t>().swap(f.src);
   f.n_all = 0;
-}
-
-void RhsEvaluator::release_particles() {
-  release_storage();
   ParticleSet& p = particles_;
   for (auto* v : {&p.mass, &p.rho0, &p.init_pos[0], &p.init_pos[1], &p.init_vel[0], &p.init_vel[1], &p.init_rho})
     std::vector<double>().swap(*v);
@@ -334,7 +312,7 @@ void RhsEvaluator::sum_stages(Partition part) {
       std::size_t last = k + 1;
       while (last < terms_.size() && terms_[last]->per_particle() && terms_[last]->stage() == done && in(part, last))
         ++last;
-      sweep(k, last, done == Term::Stage::force ? derivative_count_ : f.n_real);
+      sweep(k, last, done == Term::Stage::force ? options_.derivative_count : f.n_real);
       k = last;
       continue;
     }

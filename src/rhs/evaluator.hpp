@@ -38,6 +38,13 @@ struct RhsOptions {
   // one rank of a decomposed run, whose periodic neighbours arrive as halo copies at shifted
   // positions (distributed/halo_rhs.hpp). Read by the constructor only.
   bool periodic_images = true;
+  // Only the first derivative_count real particles' derivatives are wanted (one rank's own
+  // particles; the rest are its halo copies, whose derivatives are discarded): the force stage's
+  // per-particle sweep skips the others. The stages before it (density, pressure) and the force
+  // terms with loops of their own still cover every real particle, whose values the first ones
+  // read. Those terms write a particle's own derivatives only, so the first ones get the bits of a
+  // sweep over all.
+  std::size_t derivative_count = static_cast<std::size_t>(-1);
 };
 
 class RhsEvaluator {
@@ -78,24 +85,9 @@ class RhsEvaluator {
   // constant per-particle data follow, the neighbour list and ghosts are rebuilt at the next eval.
   // The state vector is the caller's to permute; fields() are stale until the next eval.
   void permute_particles(const std::vector<std::uint32_t>& from);
-  // Another set of particles in place of the current one (any count; the scene, kernel and terms
-  // stay): one rank's particles and halo after a new halo exchange (distributed/halo_rhs.hpp). The
-  // constant per-particle data and the state size follow; the neighbour list and ghosts are built
-  // at the next eval, into the storage of the old ones. fields() are stale until then.
-  void replace_particles(ParticleSet particles);
-  // Only the first n real particles' derivatives are wanted (one rank's own particles; the rest are
-  // its halo copies, whose derivatives are discarded): the force stage's per-particle sweep skips the
-  // others. The stages before it (density, pressure) and the force terms with loops of their own
-  // still cover every real particle, whose values the first n read. Those terms write a
-  // particle's own derivatives only, so the first n get the bits of a sweep over all.
-  void set_derivative_count(std::size_t n) { derivative_count_ = n; }
-  // Frees the neighbour list, the stored pairs and the per-point fields that the next eval fills
-  // anew (it rebuilds the list and the ghosts): a caller that will not evaluate for a while (the
-  // whole model of a decomposed run between output frames). fields() are empty until then.
-  void release_storage();
-  // release_storage, and the per-particle data besides: only layout(), kernel() and the counters
-  // stay usable, and eval must not be called again (the whole model of a decomposed run on the
-  // ranks that never evaluate it).
+  // Frees the per-particle data, the neighbour list and the fields: only layout(), kernel() and
+  // the counters stay usable, and eval must not be called again (the whole model of a decomposed
+  // run on the ranks that never evaluate it).
   void release_particles();
   const RhsTiming& timing() const { return timing_; }
 
@@ -145,7 +137,6 @@ class RhsEvaluator {
   bool periodic_[2] = {false, false};
   double lo_[2] = {0, 0}, len_[2] = {1, 1};
   double max_accel_ = 0;
-  std::size_t derivative_count_ = static_cast<std::size_t>(-1);  // set_derivative_count; all by default
   long evals_ = 0;
   RhsTiming timing_;
   std::vector<double> implicit_u_, implicit_v_;  // IMEX: f_I's acceleration of the last eval

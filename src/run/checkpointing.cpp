@@ -124,25 +124,6 @@ bool Checkpointer::take_due(double t) {
   return true;
 }
 
-void Checkpointer::at(double t, TimeIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections) {
-  if (!take_due(t)) return;
-  const double h = integrator.next_step();
-  write(t, integrator, frames, reflections);
-  integrator.restart_at(t, h);  // what a restart from this file does, see checkpointing.hpp
-  rhs.invalidate_neighbors();
-  if (model_.projection) model_.projection->forget_warm_start();  // a restart starts the solvers cold
-}
-
-void Checkpointer::at_end(double t, TimeIntegrator& integrator, long frames, long reflections) {
-  if (last_written_ == t) return;
-  write(t, integrator, frames, reflections);
-}
-
-std::string Checkpointer::write(double t, TimeIntegrator& integrator, long frames, long reflections) {
-  return write_state(t, integrator.state(), integrator.stats(), integrator.next_step(), frames, reflections,
-                     process_cpu_seconds());
-}
-
 std::string Checkpointer::write_state(double t, const double* y, const StepStats& st, double next_step, long frames,
                                       long reflections, double segment_cpu) {
   const StateLayout& L = model_.rhs->layout();
@@ -184,7 +165,6 @@ std::string Checkpointer::write_state(double t, const double* y, const StepStats
     }
   }
   write_checkpoint(path_, c);
-  last_written_ = t;
   return path_;
 }
 

@@ -54,17 +54,9 @@ class Checkpointer {
 
   // The stop time for the next step: t_stop, or the next scheduled checkpoint if that comes first.
   double limit(double t_stop);
-  // Writes the scheduled checkpoint if t has reached it; then re-initialises the integrator and the
-  // neighbour list (see above). `frames` = output frames written so far.
-  void at(double t, TimeIntegrator& integrator, RhsEvaluator& rhs, long frames, long reflections);
-  // The final checkpoint (skipped if the scheduled one was just written at t).
-  void at_end(double t, TimeIntegrator& integrator, long frames, long reflections);
-  // Unconditional write at (t, state) (interrupt). Returns the path.
-  std::string write(double t, TimeIntegrator& integrator, long frames, long reflections);
-
-  // For a run whose whole state is not one integrator's (a decomposed run, distributed/): true once
-  // if the scheduled checkpoint is due at t (the schedule moves on), for the caller to write it
-  // with write_state and re-initialise as `at` does.
+  // True once if the scheduled checkpoint is due at t (the schedule moves on), for the caller to
+  // write it with write_state and re-initialise as a restart from it does (see above;
+  // RunProcess::continue_from_checkpoint, run/run_process.hpp).
   bool take_due(double t);
   // Writes the checkpoint of the whole state y (the model's layout and particle order) with the
   // integrator's counters `st` and its next step size. Returns the path.
@@ -89,7 +81,6 @@ class Checkpointer {
   const ViscousDissipation* dissipation_ = nullptr;
   double every_ = 0;
   long next_ = 1;              // index k of the next scheduled checkpoint time k * every
-  double last_written_ = -1;   // time of the last checkpoint written by this run
   double stop_ = -1;           // the last stop time handed to the integrator (limit)
 };
 

@@ -4,6 +4,7 @@
 #include <new>
 
 #include "core/errors.hpp"
+#include "core/seconds_since.hpp"
 #include "run/checkpointing.hpp"
 #include "run/interrupt.hpp"
 #include "run/progress.hpp"
@@ -14,8 +15,6 @@ namespace arksph {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The loop's own verdict on a step to t: the step size (adaptive mode; the same on every rank).
 Verdict step_size_verdict(const Scene& scene, double t, double dt, int& tiny_steps) {

@@ -24,7 +24,7 @@
 #include "diagnostics/viscous_dissipation.hpp"
 #include "integrate/time_integrator.hpp"
 #include "run/run_result.hpp"
-#include "run/verdict.hpp"
+#include "core/verdict.hpp"
 
 namespace arksph {
 

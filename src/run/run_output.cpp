@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/seconds_since.hpp"
 #include "diagnostics/exact_velocity.hpp"
 #include "diagnostics/frame_reduction.hpp"
 #include "diagnostics/poiseuille.hpp"
@@ -13,22 +14,18 @@
 #include "io/frame_order.hpp"
 #include "io/pvtp_writer.hpp"
 #include "io/vtp_writer.hpp"
-#include "projection/ppe_assembly.hpp"
 #include "run/wall_frame.hpp"
 
 namespace arksph {
 
 namespace {
 using clock_type = std::chrono::steady_clock;
-double since(clock_type::time_point t0) {
-  return std::chrono::duration<double>(clock_type::now() - t0).count();
-}
 double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 }  // namespace
 
-RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id)
+RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id, int pieces)
     : scene_(scene), model_(model), options_(options), run_id_(std::move(run_id)),
-      steady_(scene.steady_tolerance, scene.steady_window, steady_measure_from(scene.steady_measure)) {
+      steady_(scene.steady_tolerance, scene.steady_window, steady_measure_from(scene.steady_measure)), pieces_(pieces) {
   if (options.write_frames) {
     pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
     pvd_->set_run_id(run_id_);
@@ -61,52 +58,15 @@ std::vector<std::string> RunOutput::csv_columns() const {
   return c;
 }
 
-void RunOutput::write(double t, const double* y, const std::vector<double>& d0, const StepStats& stats) {
-  RhsEvaluator& rhs = *model_.rhs;
-  rhs.eval(t, y, nullptr);  // fresh density, pressure, neighbours (timed as neighbors + rhs)
-  const auto t0 = clock_type::now();
-  const FluidFields& f = rhs.fields();
-  FrameReduction reduction(scene_, model_.sound_speed);  // one process: its own sums are the totals
-  reduction.add({&f, f.n_real, d0.data(), model_.particles.phase.data()}, [](double, double) { return true; });
-  const FrameDiagnostics diag = reduction.finish(t, reduction.fluctuations());
-  if (f.dim == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
-    const double* p = projected_pressure() ? projected_pressure() : f.p.data();
-    std::vector<std::vector<double>> rows;
-    for (std::size_t a = 0; a < f.n_real; ++a) rows.push_back({f.x[a], f.u[a], p[a], f.rho[a]});
-    write_csv(scene_.directory + "/profile_1d.csv", {"x", "u", "pressure", "density"}, rows);
-  }
-  diagnostic_seconds_ += since(t0);
-  Frame fr;
-  fr.dimension = f.dim;
-  fr.n = f.n_real;
-  fr.time = t;
-  fr.x = f.x.data();
-  fr.y = f.dim == 2 ? f.y.data() : nullptr;
-  fr.u = f.u.data();
-  fr.v = f.dim == 2 ? f.v.data() : nullptr;
-  fr.pressure = projected_pressure() ? projected_pressure() : f.p.data();
-  fr.density = f.rho.data();
-  std::vector<double> rho_sum = reduction.number_density();  // Szewc eq. 21: m_a sum_b W_ab
-  for (std::size_t a = 0; a < f.n_real; ++a) rho_sum[a] *= f.m[a];
-  fr.summation_density = rho_sum.data();
-  fr.mass = f.m.data();
-  fr.id = model_.particles.id.data();
-  fr.phase = model_.particles.phase.data();
-  fr.smoothing_length = model_.h;
-  std::vector<std::uint8_t> surface;  // fluid.region: the free-surface particles (Lind et al. 2012)
-  if (!scene_.fluid_region.empty()) {
-    const std::vector<char> s = free_surface_particles(f, free_surface_threshold(f.dim));
-    surface.assign(s.begin(), s.end());
-    fr.free_surface = surface.data();
-  }
-  std::optional<WallFrame> walls;
-  if (walls_pvd_) walls.emplace(scene_, f, fr, rhs.kernel().radius(), false);
-  record(diag, stats, &fr, walls ? &walls->frame() : nullptr);
-}
-
 void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, const Frame* whole, const Frame* walls) {
   auto t0 = clock_type::now();
   const double t = diag.t;
+  if (whole && whole->dimension == 1) {  // 1D: the whole profile is small, write it (C&R Fig. 1)
+    std::vector<std::vector<double>> rows;
+    for (std::size_t a = 0; a < whole->n; ++a)
+      rows.push_back({whole->x[a], whole->u[a], whole->pressure[a], whole->density[a]});
+    write_csv(scene_.directory + "/profile_1d.csv", {"x", "u", "pressure", "density"}, rows);
+  }
   last_ = diag.metrics;
   last_t_ = t;
   last_divergence_ = diag.divergence_rms;
@@ -181,7 +141,7 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
       rows.push_back({k * hist.bin_width, (k + 1) * hist.bin_width, static_cast<double>(hist.counts[k])});
     write_csv(scene_.directory + "/nn_histogram.csv", {"r_over_dx_lo", "r_over_dx_hi", "count"}, rows);
   }
-  diagnostic_seconds_ += since(t0);
+  diagnostic_seconds_ += seconds_since(t0);
 
   t0 = clock_type::now();
   csv_.row(row);
@@ -213,29 +173,25 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
     }
   }
   ++frames_;
-  output_seconds_ += since(t0);
+  output_seconds_ += seconds_since(t0);
 }
 
-const double* RunOutput::projected_pressure() const {
-  return model_.projection && !model_.projection->pressure().empty() ? model_.projection->pressure().data() : nullptr;
-}
-
-void RunOutput::finish(const RunResult& result, const StepStats& stats, double wall_seconds, long diag_evals,
-                       long wall_reflections, long neighbor_rebuilds) {
+void RunOutput::finish(const RunResult& result, const StepStats& stats, const RunTotals& totals) {
+  const double wall_seconds = totals.wall_seconds;
   const RhsTiming& rt = model_.rhs->timing();
   Json j = Json::object();
   j.set("scene", scene_.name).set("scheme", scene_.scheme).set("run_id", run_id_);
   j.set("particles", model_.particles.n).set("dimension", scene_.dimension);
   j.set("final_time", result.final_time >= 0 ? result.final_time : last_t_).set("steps", stats.steps).set("rhs_evals", stats.rhs_evals);
-  j.set("diagnostic_evals", diag_evals).set("step_attempts", stats.attempts);
+  j.set("diagnostic_evals", totals.diagnostic_evals).set("step_attempts", stats.attempts);
   j.set("error_test_failures", stats.error_test_fails);
-  j.set("wall_reflections", wall_reflections).set("neighbor_rebuilds", neighbor_rebuilds);
+  j.set("wall_reflections", totals.wall_reflections).set("neighbor_rebuilds", totals.neighbor_rebuilds);
   j.set("wall_seconds", wall_seconds);
-  if (cpu_seconds_ >= 0) j.set("cpu_seconds", cpu_seconds_);
+  if (totals.cpu_seconds >= 0) j.set("cpu_seconds", totals.cpu_seconds);
   j.set("status", result.exit_code == 0 ? "ok" : result.interrupted ? "interrupted" : "failed");
   if (result.exit_code != 0) j.set("failure", result.message);
   j.set("frames", frames_);
-  j.set("mpi", mpi_);
+  j.set("mpi", totals.mpi);
   j.set("terms", Json(model_.terms));
   if (scene_.imex) {  // ARKStep IMEX counters (time.imex)
     Json im = Json::object();
@@ -249,10 +205,10 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, double w
   const double ppe = model_.projection ? model_.projection->stats().seconds : 0.0;
   timing.set("neighbors", rt.neighbors).set("rhs", rt.terms).set("ppe", ppe);
   timing.set("diagnostics", diagnostic_seconds_).set("output", output_seconds_);
-  if (stepping_seconds_ >= 0) timing.set("stepping", stepping_seconds_);
-  if (reorders_ >= 0) {
-    timing.set("reorder", reorder_seconds_);
-    j.set("reorders", reorders_);
+  if (totals.stepping_seconds >= 0) timing.set("stepping", totals.stepping_seconds);
+  if (totals.reorders >= 0) {
+    timing.set("reorder", totals.reorder_seconds);
+    j.set("reorders", totals.reorders);
   }
   // What is left: set-up, ARKODE's own vector work, state checks. (ppe includes its own neighbour
   // refresh, counted in neighbors and rhs too, so it is not subtracted.)

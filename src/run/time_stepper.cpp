@@ -2,27 +2,42 @@
 
 namespace arksph {
 
-TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
-                              double t0, Projection* projection) {
+TimeStepper make_time_stepper(const Scene& scene, RhsFunction f, const ErkOptions& eo, const std::vector<double>& y0,
+                              double t0, Projection* projection, std::function<void()> projected) {
   TimeStepper ts;
   Projection* constrained = projection && projection->constrained() ? projection : nullptr;
   if (projection && !constrained) ts.after_step = projection;
-  if (!scene.imex) {
-    ErkOptions o = eo;
-    if (ts.after_step) {
-      o.postprocess = [projection](double t, double* y) { projection->project(t, y); };
-      if (projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::stages)
-        o.postprocess_stage = [projection](double t, double* y) { projection->project_stage(t, y); };
-    }
-    RhsFunction f = [&rhs](double t, const double* y, double* yd) { rhs.eval(t, y, yd); };
-    if (constrained)
-      f = [&rhs, constrained](double t, const double* y, double* yd) {
-        rhs.eval(t, y, yd);
-        constrained->constrain(y, yd, nullptr, nullptr);
+  if (!projected) projected = [] {};
+  ErkOptions o = eo;
+  if (ts.after_step) {
+    o.postprocess = [projection, projected](double t, double* y) {
+      projection->project(t, y);
+      projected();
+    };
+    if (projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::stages)
+      o.postprocess_stage = [projection, projected](double t, double* y) {
+        projection->project_stage(t, y);
+        projected();
       };
-    ts.integrator = std::make_unique<ErkIntegrator>(std::move(f), y0, t0, o);
-    return ts;
   }
+  if (constrained)
+    f = [f = std::move(f), constrained, projected](double t, const double* y, double* yd) {
+      f(t, y, yd);
+      constrained->constrain(y, yd, nullptr, nullptr);
+      projected();
+    };
+  ts.integrator = std::make_unique<ErkIntegrator>(std::move(f), y0, t0, o);
+  return ts;
+}
+
+TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
+                              double t0, Projection* projection) {
+  if (!scene.imex)
+    return make_time_stepper(
+        scene, [&rhs](double t, const double* y, double* yd) { rhs.eval(t, y, yd); }, eo, y0, t0, projection, {});
+  TimeStepper ts;
+  Projection* constrained = projection && projection->constrained() ? projection : nullptr;
+  if (projection && !constrained) ts.after_step = projection;
   ts.split = std::make_unique<ViscousSplit>(scene, rhs);
   if (constrained)
     ts.split->set_constraint([constrained](const double* y, double* fe, const double* au, const double* av) {

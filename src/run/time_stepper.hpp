@@ -1,6 +1,7 @@
 // The run's time integrator from the scene: ERKStep with time.integrator, or, with time.imex,
 // ARKStep with the pair time.imex_pair, the viscous term implicit (integrate/viscous_split.hpp).
 #pragma once
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -34,5 +35,10 @@ struct TimeStepper {
 // acceleration (under IMEX a projection must be constrained: no post-processing).
 TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
                               double t0, Projection* projection = nullptr);
+// The same with ERKStep (no time.imex) and f given as a function (one rank's, over its particles
+// and their halo); `projected` is called after each projection (after a step or stage, or the
+// constrained one inside f), when the projection's pressure is that of the current particles.
+TimeStepper make_time_stepper(const Scene& scene, RhsFunction f, const ErkOptions& eo, const std::vector<double>& y0,
+                              double t0, Projection* projection, std::function<void()> projected);
 
 }  // namespace arksph

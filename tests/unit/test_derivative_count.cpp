@@ -1,4 +1,4 @@
-// RhsEvaluator::set_derivative_count: a rank of a decomposed run wants the derivatives of its own
+// RhsOptions::derivative_count: a rank of a decomposed run wants the derivatives of its own
 // particles only (the first n), not of its halo copies. The first n must keep the bits of an
 // evaluation over all particles, and the force sweep must really skip the others.
 #include <doctest/doctest.h>
@@ -27,8 +27,9 @@ Derivatives derivatives(const Scene& scene, std::size_t count) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> vel(-1, 1);
   const ParticleSet ps = testing::jittered(scene, model.particles, rng);
-  RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed));
-  rhs.set_derivative_count(count);
+  RhsOptions options;
+  options.derivative_count = count;
+  RhsEvaluator rhs(scene, ps, make_kernel(scene.kernel, model.h, 2), terms_from_scene(scene, model.sound_speed), options);
   std::vector<double> y(rhs.layout().size()), ydot(y.size());
   rhs.initial_state(y.data());
   if (rhs.layout().has_density)
@@ -39,7 +40,7 @@ Derivatives derivatives(const Scene& scene, std::size_t count) {
 
 }  // namespace
 
-TEST_CASE("set_derivative_count: the first n particles keep their bits, the others are not swept") {
+TEST_CASE("derivative_count: the first n particles keep their bits, the others are not swept") {
   // The WCSPH default f (shifting and delta-SPH fused with the pressure gradient, continuity and
   // viscosity in one sweep), on the doubly periodic box and on a walled cavity (wall ghosts).
   const std::string cavity = testing::slurp(std::string(ARKSPH_SOURCE_DIR) + "/cases/cavity_re100/scene.toml");

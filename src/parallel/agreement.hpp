@@ -9,16 +9,16 @@
 #include <string>
 
 #include "parallel/communicator.hpp"
-#include "run/verdict.hpp"
+#include "core/verdict.hpp"
 
-namespace arksph::distributed {
+namespace arksph::parallel {
 
-using arksph::Verdict;  // run/verdict.hpp
+using arksph::Verdict;  // core/verdict.hpp
 
 // Collective.
-Verdict agree(const parallel::Communicator& comm, const Verdict& mine);
+Verdict agree(const Communicator& comm, const Verdict& mine);
 // The same, and `flag` replaced by its largest value over the ranks in the same collective (one
 // all-reduce while no rank fails): the step's wall reflections ride with the step's verdict.
-Verdict agree(const parallel::Communicator& comm, const Verdict& mine, std::int64_t& flag);
+Verdict agree(const Communicator& comm, const Verdict& mine, std::int64_t& flag);
 
-}  // namespace arksph::distributed
+}  // namespace arksph::parallel

@@ -1,16 +1,16 @@
-#include "distributed/rank_verdict.hpp"
+#include "parallel/agreement.hpp"
 
 #include <cstdint>
 #include <vector>
 
-namespace arksph::distributed {
+namespace arksph::parallel {
 
-Verdict agree(const parallel::Communicator& comm, const Verdict& mine) {
+Verdict agree(const Communicator& comm, const Verdict& mine) {
   std::int64_t none = 0;
   return agree(comm, mine, none);
 }
 
-Verdict agree(const parallel::Communicator& comm, const Verdict& mine, std::int64_t& flag) {
+Verdict agree(const Communicator& comm, const Verdict& mine, std::int64_t& flag) {
   Verdict v;
   // Ranked by code, then by whether the message names the particle.
   const std::int64_t key = 2 * static_cast<std::int64_t>(mine.code) + (mine.names_particle ? 1 : 0);
@@ -31,4 +31,4 @@ Verdict agree(const parallel::Communicator& comm, const Verdict& mine, std::int6
   return v;
 }
 
-}  // namespace arksph::distributed
+}  // namespace arksph::parallel

@@ -1,6 +1,6 @@
 // An outcome of a step or of a run: 0 (go on), or an exit code with its message (README.md, "Exit
 // codes"). On several ranks each rank brings its own and the ranks agree on one
-// (distributed/rank_verdict.hpp).
+// (parallel/agreement.hpp).
 #pragma once
 #include <string>
 

@@ -109,7 +109,7 @@ std::vector<Group> general_keys() {
         choice("method.scheme", "wcsph").family("scheme").doc("time-stepping scheme").to(&Scene::scheme),
         choice("method.kernel", "wendland_quintic").family("kernel").doc("smoothing kernel").to(&Scene::kernel),
         number("method.h_over_dx", 2.0).in(between(0.5, 4)).doc("smoothing length h / dx; the kernel radius (support x h) must exceed dx").to(&Scene::h_over_dx),
-        choice("method.viscosity_model", "morris").family("viscosity_model")
+        choice("method.viscosity_model", "auto").family("viscosity_model")
             .doc("viscous term (Basa et al. 2008 models A-E)").to(&Scene::viscosity_model),
         choice("method.kernel_correction", "none").family("kernel_correction")
             .doc("corrected kernel gradients in the pressure and viscous terms (Basa et al. 2008 §4)")

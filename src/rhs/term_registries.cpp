@@ -25,6 +25,7 @@ Part<CompressibleTermsFactory> density_diffusion_none();
 Part<CompressibleTermsFactory> density_diffusion_delta_sph();
 Part<TermFactory> wall_force_none();
 Part<TermFactory> wall_force_lennard_jones();
+AutomaticRule automatic_viscosity_model();
 AutomaticRule automatic_density_mode();
 AutomaticRule automatic_density_diffusion();
 AutomaticRule automatic_regularisation();
@@ -37,7 +38,7 @@ const Registry<TermFactory>& viscosity_models() {
       viscosity_two_pass(),
       viscosity_violeau(),
       viscosity_cleary(),
-  });
+  }, {}, automatic_viscosity_model());
   return r;
 }
 

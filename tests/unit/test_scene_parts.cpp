@@ -28,7 +28,7 @@ const CatalogKey* catalog_key(const std::string& key) {
   return nullptr;
 }
 
-// A walled box with a moving lid and a phase, under each scheme, with and without the P-W
+// A walled box with a moving lid and a phase, under each scheme, or half full (a free surface), with and without the P-W
 // correction and the constrained projection: scenes on both sides of every family rule.
 std::vector<Scene> varied_scenes() {
   const std::string box = "[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[fluid]\nspacing = 0.1\n[time]\nend = 1.0\n";
@@ -46,6 +46,7 @@ std::vector<Scene> varied_scenes() {
     out.push_back(read_scene_text(box, "test.toml", s, sink));
     out.push_back(read_scene_text(box + phase, "test.toml", s, sink));
   }
+  out.push_back(read_scene_text(box, "test.toml", {"fluid.region=\"y < 0.5\""}, sink));  // a free surface
   return out;
 }
 
@@ -113,8 +114,8 @@ TEST_CASE("scene parts: a family with an automatic rule owns its key's auto, and
     CHECK(k->param.doc.size() > tail.size());
     CHECK(k->param.doc.compare(k->param.doc.size() - tail.size(), tail.size(), tail) == 0);
   }
-  // density_mode, density_diffusion, regularisation, wall_velocity, correction_solver
-  CHECK(families == 5);
+  // viscosity_model, density_mode, density_diffusion, regularisation, wall_velocity, correction_solver
+  CHECK(families == 6);
 
   for (const Scene& read : varied_scenes()) {
     // Every family key holds a registered part, whether a rule or the file chose it.

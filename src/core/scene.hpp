@@ -28,6 +28,10 @@ struct SideSpec {
   SideKind kind = SideKind::wall;
   SlipKind slip = SlipKind::no_slip;
   std::array<double, 2> velocity{0.0, 0.0};  // wall velocity w (moving lid)
+  // A periodic side whose neighbours across arrive as halo copies at shifted positions: in the scene
+  // of one rank of a decomposed run (distributed/halo_rhs.hpp). It gives no ghost images, and the
+  // positions are not wrapped across it. No key: false in every scene that is read.
+  bool halo = false;
 };
 
 struct PhaseSpec {

@@ -98,13 +98,13 @@ void check_distributable(const Scene& scene, int ranks) {
 #ifndef ARKSPH_WITH_HYPRE
     throw InputError(scene.source + ": scheme " + scene.scheme + " (this build has no hypre for the pressure solve)" + on);
 #endif
-    if (scene.projection_method() == ProjectionMethod::orthogonal)
-      throw InputError(scene.source + ": method.projection = " + scene.projection + on);
+    if (scene.projection == ProjectionMethod::orthogonal)
+      throw InputError(scene.source + ": method.projection = " + projection_methods().name(scene.projection) + on);
     const auto* solver = correction_solvers().find(scene.correction_solver);
     if (density_corrections().at(scene.density_correction).traits.corrects_density && solver && solver->traits.one_process)
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
-    if (projection_options().ppe_operator.at(scene.ppe_operator) != PpeOperator::approximate)
-      throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
+    if (scene.ppe_operator != PpeOperator::approximate)
+      throw InputError(scene.source + ": method.ppe_operator = " + projection_options().ppe_operator.name(scene.ppe_operator) + on);
     if (!scene.fluid_region.empty())  // the surface's p = 0 rows are not in hypre's rows yet
       throw InputError(scene.source + ": fluid.region (a free surface) under scheme " + scene.scheme + on);
   }

@@ -24,7 +24,7 @@ Map compose(const Map& a, const Map& b) {
 }
 }  // namespace
 
-GhostBuilder::GhostBuilder(const Scene& scene, double support_radius, bool periodic_images)
+GhostBuilder::GhostBuilder(const Scene& scene, double support_radius)
     : dim_(scene.dimension),
       radius_(support_radius),
       alpha_(scene.corner_alpha),
@@ -37,7 +37,6 @@ GhostBuilder::GhostBuilder(const Scene& scene, double support_radius, bool perio
       dx_(scene.spacing) {
   for (int k = 0; k < dim_; ++k) len_[k] = hi_[k] - lo_[k];
   any_side_ = true;
-  periodic_images_ = periodic_images;
   for (int s = 0; s < 2 * dim_; ++s)
     if (sides_[s].kind == SideKind::wall) any_wall_ = true;
 }
@@ -64,7 +63,7 @@ void GhostBuilder::build(const double* x, const double* y, std::size_t n, GhostS
         const double dist = end == 0 ? p[k] - lo_[k] : hi_[k] - p[k];
         if (dist >= reach) continue;
         const SideSpec& s = sides_[side];
-        if (s.kind == SideKind::periodic && !periodic_images_) continue;
+        if (s.kind == SideKind::periodic && s.halo) continue;
         if (s.kind == SideKind::wall && !wall_images_) continue;
         Option o;
         o.side = side;

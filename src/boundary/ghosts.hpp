@@ -54,8 +54,8 @@ inline double ghost_depth(double support_radius, bool ghost_velocity_gradients) 
 
 class GhostBuilder {
  public:
-  // `periodic_images` false: the periodic sides give no images (walls only).
-  GhostBuilder(const Scene& scene, double support_radius, bool periodic_images = true);
+  // A periodic side gives images unless its neighbours arrive as halo copies (SideSpec::halo).
+  GhostBuilder(const Scene& scene, double support_radius);
   bool active() const { return any_side_; }
   bool has_walls() const { return any_wall_; }
   // Images of the n real particles at (x, y) (y null in 1D) lying within the support radius plus
@@ -73,7 +73,7 @@ class GhostBuilder {
   };
   int dim_;
   double radius_, alpha_;
-  bool free_slip_div_, any_side_ = false, any_wall_ = false, periodic_images_ = true;
+  bool free_slip_div_, any_side_ = false, any_wall_ = false;
   std::array<double, 2> lo_{}, hi_{}, len_{};
   std::array<SideSpec, 4> sides_{};
   bool wall_particles_ = false;  // boundary.wall_particles (2D)

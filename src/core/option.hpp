@@ -1,7 +1,8 @@
 // A closed option of a scene key (method.ppe_operator = "approximate" | "exact", ...): the one list
 // of its admissible values, each with the enumerator it stands for. The key declares its choices as
 // names(), so the scene reader admits exactly these values and the scene reference lists them; code
-// asks at(scene value) for the enumerator instead of comparing text.
+// asks at(scene value) for the enumerator instead of comparing text. A Scene member may hold the
+// enumerator itself (ParamBuilder::to with the option): read through at(), written through name().
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,12 @@ class Option {
     for (const auto& v : values_)
       if (v.first == name) return v.second;
     throw std::out_of_range(key_ + ": unknown value '" + std::string(name) + "'");
+  }
+  // The name of enumerator `e`: the scene value a typed Scene member is written back as.
+  const std::string& name(E e) const {
+    for (const auto& v : values_)
+      if (v.second == e) return v.first;
+    throw std::out_of_range(key_ + ": an enumerator without a name");
   }
 
  private:

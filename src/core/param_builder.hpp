@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/option.hpp"
 #include "core/parameter.hpp"
 #include "core/scene.hpp"
 
@@ -70,6 +71,15 @@ class ParamBuilder {
   ParamBuilder& to(T Scene::*member) {
     p_.store = [member](Scene& s, const ParamValue& v) { s.*member = param_detail::from_value<T>(v); };
     p_.load = [member](const Scene& s) { return param_detail::to_value(s.*member); };
+    return *this;
+  }
+  // A member that holds a closed option's enumerator: the value (one of option.names(), which the
+  // key declares as its choices) is parsed once when stored and written back as its name.
+  template <class E>
+  ParamBuilder& to(E Scene::*member, const Option<E>& option) {
+    const Option<E>* o = &option;  // the options are static objects (core/option.hpp)
+    p_.store = [member, o](Scene& s, const ParamValue& v) { s.*member = o->at(std::get<std::string>(v)); };
+    p_.load = [member, o](const Scene& s) { return ParamValue(o->name(s.*member)); };
     return *this;
   }
   ParamBuilder& to_table() {

@@ -9,12 +9,20 @@
 // sets what it changes. The default constructor is private, so a Scene with unset members cannot be
 // made elsewhere. Members without a key (the box, the sides, the phases, the records the reader fills)
 // keep their initialisers.
+//
+// A key with a closed list of values (an Option, core/option.hpp) is held as its enumerator
+// (core/option_values.hpp, core/projection_method.hpp): parsed once by the reader, written back as
+// its name. Text stays for the keys that select a registered part (open lists, resolved through
+// their registry), and for the closed options with an "auto" rule (method.ppe_divergence,
+// method.ppe_pressure_level, method.body_force_pressure), which hold "auto" while the rules run
+// (io/scene_defaults.cpp).
 #pragma once
 #include <array>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/option_values.hpp"
 #include "core/parameter.hpp"
 #include "core/projection_method.hpp"
 
@@ -28,6 +36,10 @@ struct SideSpec {
   SideKind kind = SideKind::wall;
   SlipKind slip = SlipKind::no_slip;
   std::array<double, 2> velocity{0.0, 0.0};  // wall velocity w (moving lid)
+  // A periodic side whose neighbours across arrive as halo copies at shifted positions: in the scene
+  // of one rank of a decomposed run (distributed/halo_rhs.hpp). It gives no ghost images, and the
+  // positions are not wrapped across it. No key: false in every scene that is read.
+  bool halo = false;
 };
 
 struct PhaseSpec {
@@ -88,17 +100,16 @@ struct Scene {
   std::string density_correction;
   std::string regularisation;  // particle regularisation in dr/dt (rhs/term_registry.hpp)
   std::string density_diffusion;  // delta-SPH in the continuity equation (wcsph)
-  std::string projection;  // isph: "cummins_rudman" (after each step) | "constrained" | "orthogonal" (pressure in f)
+  ProjectionMethod projection;  // isph: "cummins_rudman" (after each step) | "constrained" | "orthogonal" (pressure in f)
   double orthogonal_spacing;  // orthogonal projection: pressure node spacing / fluid.spacing
   double orthogonal_relaxation;  // orthogonal projection: beta of its relaxation rate
-  ProjectionMethod projection_method() const { return projection_methods().at(projection); }
-  bool pressure_in_f() const { return projection_method() != ProjectionMethod::cummins_rudman; }
+  bool pressure_in_f() const { return projection != ProjectionMethod::cummins_rudman; }
   double constraint_relaxation;  // constrained projection: alpha = this x U/h, the decay rate of D u
-  std::string ppe_operator;  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
+  PpeOperator ppe_operator;  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
   std::string ppe_divergence;  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
   std::string ppe_pressure_level;  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)
   bool force_sweep;  // the per-particle force terms share one neighbourhood gather
-  std::string neighbor_storage;  // "pairs" (W, F stored) | "candidates" (kernel on the fly)
+  NeighborStorage neighbor_storage;  // "pairs" (W, F stored) | "candidates" (kernel on the fly)
   double ppe_pressure_offset;  // isph: constant added to P after the level (background pressure)
   std::string body_force_pressure;  // isph: "modified" (P = p - rho0 g . r) | "split" (rhs/pressure_gravity.hpp)
   std::string ppe_solver;  // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (docs/methods/isph.md)
@@ -107,7 +118,7 @@ struct Scene {
   double gpps_volume_relaxation;  // isph-gpps: beta of the cell-volume source term (0: off, Szewc's GPPS)
   bool centre_positions;  // isph: positions centred in time (C&R eq. 12)
   long reorder_every;  // re-sort particles by cell at t = 0 and every this many steps (0: never)
-  std::string projection_points;  // isph: project after each "step" (C&R) | after each "stages" too
+  ProjectionPoints projection_points;  // isph: project after each "step" (C&R) | after each "stages" too
   double correction_threshold;  // pozorski_wawrenczuk: r.m.s. relative density error that triggers it
   int correction_max_iterations;  // pozorski_wawrenczuk: Poisson solves per step at most
   std::string correction_solver;  // pozorski_wawrenczuk: "fixed_point" | "kinsol" | "newton"
@@ -117,7 +128,7 @@ struct Scene {
   double end;
   double steady_tolerance;  // > 0: stop at steady state (diagnostics/steady_state.hpp)
   double steady_window;  // simulated time the steady-state rate is taken over (0: one output interval)
-  std::string steady_measure;  // how the steady-state rate is taken (diagnostics/steady_state.hpp)
+  SteadyMeasure steady_measure;  // how the steady-state rate is taken (diagnostics/steady_state.hpp)
   std::string integrator;
   double dt;  // 0: adaptive, limited by the stability function; > 0: fixed step
   double cfl;  // coefficient of Szewc eqs. 34-35

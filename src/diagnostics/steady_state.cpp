@@ -26,14 +26,6 @@ const Option<SteadyMeasure>& steady_measures() {
   return o;
 }
 
-SteadyMeasure steady_measure_from(const std::string& name) {
-  try {
-    return steady_measures().at(name);
-  } catch (const std::out_of_range& e) {
-    throw std::invalid_argument(e.what());
-  }
-}
-
 namespace {
 // Output times are scheduled as k * output.every: allow for their round-off against t - W.
 double slack(double t) { return 1e-9 * std::max(1.0, std::abs(t)); }
@@ -109,7 +101,7 @@ const std::vector<Param>& steady_state_params() {
           .doc("the steady-state change rate: window_means compares the mean samples of the two latest windows of "
                "time.steady_window (robust to particle noise; the window must be 0 or at least output.every), "
                "intervals takes the largest change between consecutive output times within one window")
-          .to(&Scene::steady_measure),
+          .to(&Scene::steady_measure, steady_measures()),
   };
   return params;
 }

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "core/option.hpp"
+#include "core/option_values.hpp"  // SteadyMeasure (a Scene member)
 #include "core/parameter.hpp"
 
 namespace arksph {
@@ -44,12 +45,8 @@ struct SteadySample {
 // r(a, b) above; a.t < b.t and equal centreline lengths.
 double steady_change_rate(const SteadySample& a, const SteadySample& b);
 
-enum class SteadyMeasure { window_means, intervals };
 // time.steady_measure's values (the choices of the key).
 const Option<SteadyMeasure>& steady_measures();
-
-// time.steady_measure's value ("window_means" or "intervals"); throws std::invalid_argument otherwise.
-SteadyMeasure steady_measure_from(const std::string& name);
 
 class SteadyStateMonitor {
  public:

@@ -98,13 +98,13 @@ void check_distributable(const Scene& scene, int ranks) {
 #ifndef ARKSPH_WITH_HYPRE
     throw InputError(scene.source + ": scheme " + scene.scheme + " (this build has no hypre for the pressure solve)" + on);
 #endif
-    if (scene.projection_method() == ProjectionMethod::orthogonal)
-      throw InputError(scene.source + ": method.projection = " + scene.projection + on);
+    if (scene.projection == ProjectionMethod::orthogonal)
+      throw InputError(scene.source + ": method.projection = " + projection_methods().name(scene.projection) + on);
     const auto* solver = correction_solvers().find(scene.correction_solver);
     if (density_corrections().at(scene.density_correction).traits.corrects_density && solver && solver->traits.one_process)
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
-    if (projection_options().ppe_operator.at(scene.ppe_operator) != PpeOperator::approximate)
-      throw InputError(scene.source + ": method.ppe_operator = " + scene.ppe_operator + on);
+    if (scene.ppe_operator != PpeOperator::approximate)
+      throw InputError(scene.source + ": method.ppe_operator = " + projection_options().ppe_operator.name(scene.ppe_operator) + on);
     if (!scene.fluid_region.empty())  // the surface's p = 0 rows are not in hypre's rows yet
       throw InputError(scene.source + ": fluid.region (a free surface) under scheme " + scene.scheme + on);
   }
@@ -244,9 +244,11 @@ void RankProcess::built(Model& model) {
 }
 
 // The particles dealt to the ranks from the whole initial state, and their fields at t = 0 (below).
-// No rank evaluates the whole model: the initial state, its evaluator's particle data and the
-// model's initial positions go now (a new deal reads only masses, densities, phases and ids; the
-// initial velocities stay until the state checker has read them).
+// No rank evaluates the whole model: the initial state, its evaluator's particle data (the evaluator
+// gives way to one without, halo_rhs.hpp, and the one-process projection over it goes: the ranks'
+// own is built by make_projection) and the model's initial positions go now (a new deal reads only
+// masses, densities, phases and ids; the initial velocities stay until the state checker has read
+// them).
 void RankProcess::initial_state(Model&) {
   RhsEvaluator& rhs = *model_->rhs;
   std::vector<double> y0(rhs.layout().size());
@@ -256,7 +258,8 @@ void RankProcess::initial_state(Model&) {
   std::vector<double>().swap(y0);
   // The constrained projection's rates read the whole model's initial speeds.
   flow_ = scene_.pressure_in_f() ? flow_rate(scene_, rhs) : 0.0;
-  rhs.release_particles();
+  model_->projection.reset();
+  model_->rhs = without_particles(scene_, *model_);
   for (auto* v : {&model_->particles.init_pos[0], &model_->particles.init_pos[1]}) std::vector<double>().swap(*v);
   f_.emplace(scene_, *model_, comm_, *mine_);
   f_->set_decomposition(*decomposition_);
@@ -284,7 +287,7 @@ void RankProcess::initial_fields() {
 // set-up's again for a checkpoint written on ranks (so a restart pins the same particle).
 void RankProcess::make_projection() {
 #ifdef ARKSPH_WITH_HYPRE
-  if (!model_->projection) return;
+  if (!scheme_traits(scene_.scheme).projection) return;
   model_->projection = std::make_unique<Projection>(
       scene_, std::make_unique<HaloDomain>(comm_, *f_, *mine_, model_->particles.id[0]), flow_);
   projection_ = model_->projection.get();

@@ -18,8 +18,23 @@ constexpr double kHaloSupports = 2.0;
 constexpr double kSkinFraction = 0.15;
 }  // namespace
 
+Scene rank_scene(const Scene& scene) {
+  Scene s = scene;
+  for (SideSpec& side : s.sides) side.halo = side.kind == SideKind::periodic;
+  return s;
+}
+
+std::unique_ptr<RhsEvaluator> without_particles(const Scene& scene, const Model& model) {
+  ParticleSet none;
+  none.dim = model.particles.dim;
+  none.n = model.particles.n;
+  none.dx = model.particles.dx;
+  none.init_energy = model.particles.init_energy;
+  return std::make_unique<RhsEvaluator>(scene, none, model.rhs->kernel(), terms_from_scene(scene, model.sound_speed));
+}
+
 HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, RankParticles& owned)
-    : scene_(scene),
+    : scene_(rank_scene(scene)),
       model_(model),
       comm_(comm),
       owned_(owned),
@@ -101,7 +116,6 @@ void HaloRhs::build_evaluator() {
   for (std::uint64_t id : halo_.id) set.id.push_back(static_cast<std::int64_t>(id));
   evaluator_.reset();  // never the old and the new at once
   RhsOptions options;
-  options.periodic_images = false;
   options.pairs_at_every_f = scene_.pressure_in_f();  // the constrained projection walks the pairs of each f
   options.derivative_count = F.size();                // the halo copies' derivatives are discarded
   evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),

@@ -9,7 +9,8 @@
 // summation, kernel correction, the density-diffusion gradient, velocity gradients at wall
 // images); the copies within R of the rank's particles have their whole neighbourhood within 2 R.
 // Wall images of the rank's particles and of the copies come from the evaluator's ghosts, which
-// build walls only (RhsOptions::periodic_images off): the periodic images are halo copies.
+// build walls only: the evaluator takes the rank's scene (rank_scene), whose periodic sides are
+// marked as bringing halo copies (SideSpec::halo).
 //
 // At each evaluation the copies take the state's new positions, velocities, density and energy
 // from their owners, and every rank its largest displacement since the last exchange from every
@@ -36,6 +37,14 @@
 #include "run/setup.hpp"
 
 namespace arksph::distributed {
+
+// The scene of one rank's evaluator: the run's, its periodic sides marked as bringing halo copies.
+Scene rank_scene(const Scene& scene);
+
+// The whole model's evaluator as a rank keeps it, without particle data: the layout, kernel and
+// terms (their step limits, Term::max_step) that the run reads of the model, which no rank
+// evaluates (RankProcess puts it in place of the model's evaluator once the particles are dealt).
+std::unique_ptr<RhsEvaluator> without_particles(const Scene& scene, const Model& model);
 
 class HaloRhs {
  public:
@@ -77,7 +86,7 @@ class HaloRhs {
   void exchange();
   void build_evaluator();
 
-  const Scene& scene_;
+  const Scene scene_;  // rank_scene of the run's
   const Model& model_;
   const parallel::Communicator& comm_;
   RankParticles& owned_;

@@ -133,7 +133,7 @@ std::vector<Group> general_keys() {
       {projection_params(), "isph"},
       {{choice("method.neighbor_storage", "pairs").choices(neighbor_storages().names())
             .doc("kernel values stored per pair (fast), or only the candidates stored and the kernel recomputed by every term (less memory)")
-            .to(&Scene::neighbor_storage),
+            .to(&Scene::neighbor_storage, neighbor_storages()),
         flag("method.force_sweep", true)
             .doc("force terms share one neighbour gather per particle (no pair storage); same results")
             .to(&Scene::force_sweep),

@@ -74,7 +74,7 @@ void check_progress(const std::map<std::string, Section>& sections, const Scene&
   if (s.steady_tolerance > 0 && s.every <= 0)
     time.fail("steady_tolerance", format_number(s.steady_tolerance) +
                                       " needs output.every > 0: the steady-state rate is measured between output times");
-  if (s.steady_tolerance > 0 && steady_measures().at(s.steady_measure) == SteadyMeasure::window_means && s.steady_window > 0 && s.every > 0 &&
+  if (s.steady_tolerance > 0 && s.steady_measure == SteadyMeasure::window_means && s.steady_window > 0 && s.every > 0 &&
       s.steady_window < s.every)
     time.fail("steady_window", format_number(s.steady_window) + " is shorter than output.every = " +
                                    format_number(s.every) +
@@ -137,8 +137,8 @@ void check_scene_options(const std::map<std::string, Section>& sections, const S
   if (!s.wall_ghosts && !scheme.weakly_compressible)
     sections.at("boundary").fail("wall_ghosts", "false needs method.scheme = \"wcsph\" (got \"" + s.scheme +
                                                     "\": the pressure projection needs the walls' images)");
-  if (projection_options().ppe_operator.at(s.ppe_operator) != PpeOperator::approximate && !scheme.particle_poisson())
-    sections.at("method").fail("ppe_operator", "\"" + s.ppe_operator + "\" needs method.scheme = \"isph\" (got \"" +
+  if (s.ppe_operator != PpeOperator::approximate && !scheme.particle_poisson())
+    sections.at("method").fail("ppe_operator", "\"" + projection_options().ppe_operator.name(s.ppe_operator) + "\" needs method.scheme = \"isph\" (got \"" +
                                                    s.scheme + "\": " +
                                                    (scheme.grid ? "its pressure is solved on the grid" :
                                                                   "it has no pressure Poisson equation") +

@@ -318,20 +318,22 @@ bool left_automatic(const Section& sec, const std::string& name, const Param& p)
 void check_method(const Section& m, Scene& s) {
   // What the constrained projection (pressure inside f) does not combine with: one line naming both keys.
   if (s.pressure_in_f()) {
-    const std::string value = "\"" + s.projection + "\"";
+    const std::string value = "\"" + projection_methods().name(s.projection) + "\"";
     if (scheme_traits(s.scheme).grid)
       m.fail("projection", value + " needs the particle Poisson equation: method.scheme = \"isph\" (got \"" +
                                s.scheme + "\")");
-    if (projection_options().projection_points.at(s.projection_points) != ProjectionPoints::step)
-      m.fail("projection", value + " projects inside f: method.projection_points = \"" + s.projection_points +
+    if (s.projection_points != ProjectionPoints::step)
+      m.fail("projection", value + " projects inside f: method.projection_points = \"" +
+                               projection_options().projection_points.name(s.projection_points) +
                                "\" does not apply");
-    if (projection_options().ppe_operator.at(s.ppe_operator) != PpeOperator::approximate)
-      m.fail("projection", value + " builds its own operator: method.ppe_operator = \"" + s.ppe_operator +
+    if (s.ppe_operator != PpeOperator::approximate)
+      m.fail("projection", value + " builds its own operator: method.ppe_operator = \"" +
+                               projection_options().ppe_operator.name(s.ppe_operator) +
                                "\" does not apply");
   }
-  if (s.projection_method() == ProjectionMethod::orthogonal && s.dimension != 2)
+  if (s.projection == ProjectionMethod::orthogonal && s.dimension != 2)
     m.fail("projection", "\"orthogonal\" needs a 2D scene (scene.dimension = " + std::to_string(s.dimension) + ")");
-  if (projection_options().ppe_operator.at(s.ppe_operator) == PpeOperator::exact) {
+  if (s.ppe_operator == PpeOperator::exact) {
     s.ppe_solver = exact_operator_solver(s.ppe_solver);
     if (s.ppe_solver.empty())
       m.fail("ppe_operator", "the exact operator is not symmetric: it needs method.ppe_solver = \"klu\"");
@@ -354,7 +356,7 @@ void check_energy_budget(const Section& metrics, const Scene& s) {
 void check_time_output(const std::map<std::string, Section>& sections, Scene& s) {
   if (s.imex && !scheme_traits(s.scheme).weakly_compressible && !s.pressure_in_f())
     sections.at("time").fail("imex", "needs method.scheme = \"wcsph\", or \"isph\" with method.projection = \"constrained\" or \"orthogonal\" (got scheme \"" +
-                                         s.scheme + "\", projection \"" + s.projection + "\")");
+                                         s.scheme + "\", projection \"" + projection_methods().name(s.projection) + "\")");
   const Section& o = sections.at("output");
   if (!o.has("directory")) s.directory = default_output_directory(s);
   if (s.directory.empty()) o.fail("directory", "must not be empty");

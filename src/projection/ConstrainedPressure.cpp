@@ -34,7 +34,7 @@ double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
 }
 
 double relaxation_rate(const Scene& scene, double flow_rate) {
-  const double beta = scene.projection_method() == ProjectionMethod::orthogonal ? scene.orthogonal_relaxation
+  const double beta = scene.projection == ProjectionMethod::orthogonal ? scene.orthogonal_relaxation
                                                                                  : scene.constraint_relaxation;
   return beta * flow_rate;
 }
@@ -47,7 +47,7 @@ ConstrainedPressure::ConstrainedPressure(const Scene& scene, ParticleDomain& dom
       poisson_(domain.poisson(scene, false)) {
   if (density_corrections().at(scene.density_correction).traits.corrects_density)
     density_ = std::make_unique<DensityRelaxation>(scene, scene.correction_relaxation * flow_rate);
-  if (scene.projection_method() == ProjectionMethod::orthogonal) {
+  if (scene.projection == ProjectionMethod::orthogonal) {
     if (split_.active())
       throw InputError(scene.source + ": method.projection = \"orthogonal\" does not take fluid.body_force with walls yet "
                        "(the wall flux of the body force is not on its pressure space): use \"constrained\"");

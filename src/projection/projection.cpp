@@ -54,7 +54,7 @@ const std::vector<Param>& projection_params() {
       choice("method.projection", "cummins_rudman").choices(projection_methods().names())
           .doc("cummins_rudman: approximate projection after each step (C&R 1999); constrained: pressure solved inside f(t, y) at every stage, the table's temporal order; "
                "orthogonal: as constrained, with an idempotent (orthogonal) projection on a coarse pressure space (docs/methods/isph.md)")
-          .to(&Scene::projection),
+          .to(&Scene::projection, projection_methods()),
       number("method.orthogonal_spacing", 3.0).in(at_least(1.5))
           .doc("orthogonal projection: spacing of the pressure's B-spline nodes over fluid.spacing (coarser: fewer "
                "constraints, better conditioned; at 1 the nodes resolve the particles' odd-even modes and K_c "
@@ -68,7 +68,7 @@ const std::vector<Param>& projection_params() {
           .to(&Scene::constraint_relaxation),
       choice("method.ppe_operator", "approximate").choices(projection_options().ppe_operator.names())
           .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; scheme isph with klu only)")
-          .to(&Scene::ppe_operator),
+          .to(&Scene::ppe_operator, projection_options().ppe_operator),
       choice("method.ppe_divergence", "auto").choices(projection_options().ppe_divergence.names())
           .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts; "
                "auto: difference for isph-gpps, cummins_rudman for isph")
@@ -94,7 +94,7 @@ const std::vector<Param>& projection_time_params() {
           .to(&Scene::centre_positions),
       choice("method.projection_points", "step").choices(projection_options().projection_points.names())
           .doc("project after each accepted step (C&R), or also after every ERK stage")
-          .to(&Scene::projection_points),
+          .to(&Scene::projection_points, projection_options().projection_points),
   };
   return params;
 }
@@ -103,7 +103,7 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
     : domain_(std::move(domain)),
       split_(scene),
       centre_positions_(scene.centre_positions),
-      exact_operator_(projection_options().ppe_operator.at(scene.ppe_operator) == PpeOperator::exact),
+      exact_operator_(scene.ppe_operator == PpeOperator::exact),
       difference_divergence_(projection_options().ppe_divergence.at(scene.ppe_divergence) == PpeDivergence::difference),
       zero_min_level_(projection_options().ppe_pressure_level.at(scene.ppe_pressure_level) == PressureLevel::zero_min),
       free_surface_(!scene.fluid_region.empty()),
@@ -118,7 +118,7 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
   if (density_corrections().at(scene.density_correction).traits.corrects_density && !scene.pressure_in_f())
     correction_ = std::make_unique<DensityCorrection>(scene, *domain_);
   // Stages projected one by one, or a pressure inside f (constrained), carry no increment.
-  const bool after_step = projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::step;
+  const bool after_step = scene.projection_points == ProjectionPoints::step;
   slip_origin_ = split_.active() && after_step && !scene.pressure_in_f();
   if (scene.pressure_in_f()) constrained_ = std::make_unique<ConstrainedPressure>(scene, *domain_, flow_rate);
 }

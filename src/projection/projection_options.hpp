@@ -2,13 +2,12 @@
 // these values as their choices).
 #pragma once
 #include "core/option.hpp"
+#include "core/option_values.hpp"  // PpeOperator, ProjectionPoints (Scene members)
 
 namespace arksph {
 
-enum class PpeOperator { approximate, exact };             // the Laplacian of the PPE: C&R eq. 19 or eq. 18
 enum class PpeDivergence { cummins_rudman, difference };   // its source: C&R eq. 17 or Szewc et al. 2012 eq. 19
 enum class PressureLevel { zero_mean, zero_min };          // the free level of P of the Neumann problem
-enum class ProjectionPoints { step, stages };              // after each accepted step, or also after every ERK stage
 
 struct ProjectionOptions {
   Option<PpeOperator> ppe_operator;            // method.ppe_operator

@@ -27,10 +27,10 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
     : particles_(particles),
       kernel_(std::move(kernel)),
       terms_(std::move(terms)),
-      ghosts_(scene, kernel_.radius(), terms_, options.periodic_images),
+      ghosts_(scene, kernel_.radius(), terms_),
       neighbors_(scene, kernel_.radius()) {
   for (int k = 0; k < scene.dimension; ++k) {
-    periodic_[k] = options.periodic_images && scene.sides[2 * k].kind == SideKind::periodic;
+    periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic && !scene.sides[2 * k].halo;
     lo_[k] = scene.min[k];
     len_[k] = scene.max[k] - scene.min[k];
   }
@@ -55,11 +55,6 @@ RhsEvaluator::RhsEvaluator(const Scene& scene, const ParticleSet& particles, Ker
   fields_.kernel = &kernel_;
   fields_.nu = scene.viscosity;
   fields_.rho0 = particles.rho0;
-  const std::size_t n = particles.n;
-  fields_.dudt.assign(n, 0.0);
-  fields_.dvdt.assign(n, 0.0);
-  fields_.drhodt.assign(n, 0.0);
-  if (layout_.has_energy) fields_.dedt.assign(n, 0.0);
   set_options(options);
 }
 
@@ -111,24 +106,6 @@ void RhsEvaluator::permute_particles(const std::vector<std::uint32_t>& from) {
   permute(implicit_v_, from);
 }
 
-void RhsEvaluator::release_particles() {
-  neighbors_.release();
-  FluidFields& f = fields_;
-  f.pairs = PairList{};
-  // Filled by load_state, the ghosts' rebuild (GhostField::refresh) and the force stage.
-  for (auto* v : {&f.x, &f.y, &f.u, &f.v, &f.ud, &f.vd, &f.rho, &f.p, &f.m, &f.vol, &f.mu, &f.flip_x, &f.flip_y})
-    std::vector<double>().swap(*v);
-  std::vector<std::uint32_t>().swap(f.src);
-  f.n_all = 0;
-  ParticleSet& p = particles_;
-  for (auto* v : {&p.mass, &p.rho0, &p.init_pos[0], &p.init_pos[1], &p.init_vel[0], &p.init_vel[1], &p.init_rho})
-    std::vector<double>().swap(*v);
-  std::vector<std::int64_t>().swap(p.id);
-  std::vector<std::int32_t>().swap(p.phase);
-  for (auto* v : {&fields_.rho0, &fields_.dudt, &fields_.dvdt, &fields_.drhodt, &fields_.dedt})
-    std::vector<double>().swap(*v);
-}
-
 void RhsEvaluator::initial_state(double* y) const {
   const std::size_t n = layout_.n;
   for (int k = 0; k < layout_.dim; ++k) {
@@ -156,6 +133,10 @@ double RhsEvaluator::load_state(double t, const double* y) {
   for (auto* v : {&f.x, &f.u, &f.ud, &f.rho, &f.p}) resize_with_headroom(*v, n);
   if (two_d)
     for (auto* v : {&f.y, &f.v, &f.vd}) resize_with_headroom(*v, n);
+  // The derivatives of the real particles only: sized at the first evaluation (an evaluator that
+  // is never evaluated holds nothing per particle but its copy of the particle set).
+  for (auto* v : {&f.dudt, &f.dvdt, &f.drhodt}) v->resize(n);
+  if (layout_.has_energy) f.dedt.resize(n);
   if (layout_.has_energy) f.e.assign(y + layout_.energy(), y + layout_.energy() + n);
   const double* yx = y + layout_.pos(0);
   const double* yy = two_d ? y + layout_.pos(1) : nullptr;

@@ -34,10 +34,6 @@ struct RhsOptions {
   // The pair list stored at every f, for a caller that walks fields().pairs after eval(t, y, ydot)
   // (the constrained projection).
   bool pairs_at_every_f = false;
-  // Periodic sides give images (boundary/ghosts) and positions are wrapped into the box. Off for
-  // one rank of a decomposed run, whose periodic neighbours arrive as halo copies at shifted
-  // positions (distributed/halo_rhs.hpp). Read by the constructor only.
-  bool periodic_images = true;
   // Only the first derivative_count real particles' derivatives are wanted (one rank's own
   // particles; the rest are its halo copies, whose derivatives are discarded): the force stage's
   // per-particle sweep skips the others. The stages before it (density, pressure) and the force
@@ -85,10 +81,6 @@ class RhsEvaluator {
   // constant per-particle data follow, the neighbour list and ghosts are rebuilt at the next eval.
   // The state vector is the caller's to permute; fields() are stale until the next eval.
   void permute_particles(const std::vector<std::uint32_t>& from);
-  // Frees the per-particle data, the neighbour list and the fields: only layout(), kernel() and
-  // the counters stay usable, and eval must not be called again (the whole model of a decomposed
-  // run on the ranks that never evaluate it).
-  void release_particles();
   const RhsTiming& timing() const { return timing_; }
 
   // f_I of the last eval() with options().imex_split: zero except the velocity block, which holds

@@ -16,10 +16,9 @@ bool any_needs_ghost_gradients(const std::vector<std::unique_ptr<Term>>& terms) 
 }
 }  // namespace
 
-GhostField::GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms,
-                       bool periodic_images)
+GhostField::GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms)
     : depth_(ghost_depth(support_radius, any_needs_ghost_gradients(terms))),
-      builder_(scene, depth_, periodic_images),
+      builder_(scene, depth_),
       force_(momentum_body_force(scene), scene),
       hydrostatic_pressure_(scheme_traits(scene.scheme).weakly_compressible && !force_.zero()) {
   if (const auto make = wall_velocity_rules().at(scene.wall_velocity).make; make && scene.dimension == 2)

@@ -26,9 +26,7 @@ class GhostField {
  public:
   // Layers as deep as the terms need (ghost_depth): the support radius, or twice that when a term
   // needs the velocity gradient at the ghosts.
-  // `periodic_images` false: walls only (the periodic sides give no images).
-  GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms,
-             bool periodic_images = true);
+  GhostField(const Scene& scene, double support_radius, const std::vector<std::unique_ptr<Term>>& terms);
   double depth() const { return depth_; }
 
   // Appends the ghosts of the f.n_real real particles, whose positions and velocities are loaded, to

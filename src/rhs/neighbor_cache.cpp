@@ -13,7 +13,7 @@ const Option<NeighborStorage>& neighbor_storages() {
 NeighborCache::NeighborCache(const Scene& scene, double support_radius)
     // Verlet skin: candidates within 1.15 R; rebuilt when a particle has moved more than 0.075 R.
     : skin_(0.15 * support_radius),
-      lean_(neighbor_storages().at(scene.neighbor_storage) == NeighborStorage::candidates),
+      lean_(scene.neighbor_storage == NeighborStorage::candidates),
       sweep_(scene.force_sweep) {}
 
 void NeighborCache::rebuild(const FluidFields& f) {

@@ -26,7 +26,6 @@ namespace arksph {
 
 // method.neighbor_storage: the kernel values stored per pair, or only the candidates (the key is
 // declared in io/scene_keys.cpp with these values as its choices).
-enum class NeighborStorage { pairs, candidates };
 const Option<NeighborStorage>& neighbor_storages();
 
 // Who reads f.pairs after a neighbour refresh: nobody, one walk, or several walks.

@@ -37,7 +37,7 @@ void print_run_header(const Scene& scene, const Model& model, const RunProcess& 
   if (model.reference_speed > 0) std::printf("  flow speed U %.6g (scale of the regularisation velocity)\n", model.reference_speed);
   if (model.projection && model.projection->constrained()) {
     const ConstrainedPressure& c = *model.projection->constraint();
-    std::printf("  %s projection, divergence relaxation rate %.6g", scene.projection.c_str(), c.relaxation());
+    std::printf("  %s projection, divergence relaxation rate %.6g", projection_methods().name(scene.projection).c_str(), c.relaxation());
     if (c.density_relaxation())  // the P-W correction as a velocity in dr/dt
       std::printf(", density relaxation rate %.6g", c.density_relaxation()->rate());
     std::printf("\n");
@@ -54,7 +54,7 @@ void print_run_header(const Scene& scene, const Model& model, const RunProcess& 
   std::printf("  integrator %s, %s, end time %g\n", method.c_str(), stepping.c_str(), scene.end);
   if (scene.steady_tolerance > 0) {  // diagnostics/steady_state.hpp
     char window[96] = "the latest output interval";
-    if (scene.steady_window > 0 && steady_measures().at(scene.steady_measure) == SteadyMeasure::window_means)
+    if (scene.steady_window > 0 && scene.steady_measure == SteadyMeasure::window_means)
       std::snprintf(window, sizeof window, "the means of two windows of %g of simulated time", scene.steady_window);
     else if (scene.steady_window > 0)
       std::snprintf(window, sizeof window, "every output interval of the last %g of simulated time", scene.steady_window);

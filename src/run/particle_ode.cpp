@@ -98,7 +98,7 @@ void ParticleOde::rhs(double t, const double* y, double* ydot) {
 void ParticleOde::project(double t_start, const double* y_start, double t, double* y) {
   if (!model_.projection || model_.projection->constrained())
     throw InputError("project: the scene has no projection after a step (method.scheme " + scene_.scheme +
-                     ", method.projection " + scene_.projection + "); f already holds the pressure");
+                     ", method.projection " + projection_methods().name(scene_.projection) + "); f already holds the pressure");
   if (!(t > t_start)) throw InputError("project: t must be after t_start");
   to_inside(y_start, y_start_in_);
   to_inside(y, y_in_);

@@ -25,7 +25,7 @@ double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), 
 
 RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id, int pieces)
     : scene_(scene), model_(model), options_(options), run_id_(std::move(run_id)),
-      steady_(scene.steady_tolerance, scene.steady_window, steady_measure_from(scene.steady_measure)), pieces_(pieces) {
+      steady_(scene.steady_tolerance, scene.steady_window, scene.steady_measure), pieces_(pieces) {
   if (options.write_frames) {
     pvd_ = std::make_unique<PvdCollection>(scene.directory, "particles.pvd");
     pvd_->set_run_id(run_id_);
@@ -253,7 +253,7 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, const Ru
   if (steady_.enabled()) {  // time.steady_tolerance: whether and when the run stopped at steady state
     Json ss = Json::object();
     ss.set("tolerance", scene_.steady_tolerance).set("window", scene_.steady_window);
-    ss.set("measure", scene_.steady_measure);
+    ss.set("measure", steady_measures().name(scene_.steady_measure));
     ss.set("reached", steady_time_ >= 0).set("time", steady_time_ >= 0 ? Json(steady_time_) : Json());
     ss.set("rate", steady_.rate());
     j.set("steady_state", ss);

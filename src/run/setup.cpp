@@ -100,7 +100,7 @@ Model build_model(const Scene& scene) {
     if (scheme.grid) {
       const GridSpec g = gpps_grid(scene);
       model.terms.push_back("projection:gpps-klu:" + std::to_string(g.nx) + "x" + std::to_string(g.ny));
-    } else if (scene.projection_method() == ProjectionMethod::orthogonal) {  // the coarse pressure space's dense LDLT (ppe_solver unused)
+    } else if (scene.projection == ProjectionMethod::orthogonal) {  // the coarse pressure space's dense LDLT (ppe_solver unused)
       char spacing[32];
       std::snprintf(spacing, sizeof spacing, "%gdx", scene.orthogonal_spacing);
       model.terms.push_back(std::string("projection:orthogonal-coarse-ldlt:") + spacing);
@@ -110,7 +110,7 @@ Model build_model(const Scene& scene) {
       model.terms.push_back("projection:ppe-" + scene.ppe_solver);
     }
     if (scene.centre_positions && !model.projection->constrained()) model.terms.push_back("projection:centred_positions");
-    if (projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::stages) model.terms.push_back("projection:stages");
+    if (scene.projection_points == ProjectionPoints::stages) model.terms.push_back("projection:stages");
     if (density_corrections().at(scene.density_correction).traits.corrects_density) model.terms.push_back("correction:" + scene.density_correction);
   }
   return model;

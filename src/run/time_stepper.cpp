@@ -14,7 +14,7 @@ TimeStepper make_time_stepper(const Scene& scene, RhsFunction f, const ErkOption
       projection->project(t, y);
       projected();
     };
-    if (projection_options().projection_points.at(scene.projection_points) == ProjectionPoints::stages)
+    if (scene.projection_points == ProjectionPoints::stages)
       o.postprocess_stage = [projection, projected](double t, double* y) {
         projection->project_stage(t, y);
         projected();

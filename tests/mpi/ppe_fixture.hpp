@@ -102,13 +102,15 @@ struct RankPpe {
   std::vector<distributed_ppe::GlobalRow> row_of;  // owned, then halo
   std::vector<std::size_t> index_of;               // one-process index of owned, then halo
   distributed_ppe::GlobalRow pinned = -1;
+  Scene scene;  // one.scene, its periodic sides bringing halo copies (SideSpec::halo): walls only
   std::unique_ptr<RhsEvaluator> rhs;
   distributed_ppe::LocalRows rows;
 
   // keep_halo < 1: only that leading fraction of the received halo copies is kept (a test of the
   // test: a rank that misses copies must assemble other rows).
   RankPpe(const Communicator& comm, const OneProcessPpe& one, double keep_halo = 1.0)
-      : owned(2, N_FIELDS), halo(2, N_FIELDS) {
+      : owned(2, N_FIELDS), halo(2, N_FIELDS), scene(one.scene) {
+    for (SideSpec& side : scene.sides) side.halo = side.kind == SideKind::periodic;
     const ParticleSet& ps = one.particles;
     const CellGrid grid(ppe_domain(one.scene), one.radius());
     ParticleFields positions(2, 2);
@@ -155,10 +157,8 @@ struct RankPpe {
         index_of.push_back(static_cast<std::size_t>(p->field[INDEX][i]));
       }
     }
-    RhsOptions options;
-    options.periodic_images = false;  // the halo brings the periodic images
-    rhs = std::make_unique<RhsEvaluator>(one.scene, set, make_kernel(one.scene.kernel, one.model.h, 2),
-                                         terms_from_scene(one.scene, one.model.sound_speed), options);
+    rhs = std::make_unique<RhsEvaluator>(scene, set, make_kernel(scene.kernel, one.model.h, 2),
+                                         terms_from_scene(scene, one.model.sound_speed));
     std::vector<double> y(rhs->layout().size());
     rhs->initial_state(y.data());
     rhs->eval(0.0, y.data(), nullptr);

@@ -113,8 +113,8 @@ TEST_CASE("isph: a second projection changes u again, by an amount independent o
 }
 
 TEST_CASE("isph: method.projection_points takes step or stages only, and round-trips") {
-  CHECK(isph_box({}).projection_points == "step");
-  CHECK(isph_box({"method.projection_points=stages"}).projection_points == "stages");
+  CHECK(isph_box({}).projection_points == ProjectionPoints::step);
+  CHECK(isph_box({"method.projection_points=stages"}).projection_points == ProjectionPoints::stages);
   try {
     isph_box({"method.projection_points=sometimes"});
     FAIL("accepted");
@@ -123,5 +123,5 @@ TEST_CASE("isph: method.projection_points takes step or stages only, and round-t
   }
   const Scene s = isph_box({"method.projection_points=stages"});
   std::ostringstream warnings;
-  CHECK(read_scene_text(scene_to_toml(s), "round trip", {}, warnings).projection_points == "stages");
+  CHECK(read_scene_text(scene_to_toml(s), "round trip", {}, warnings).projection_points == ProjectionPoints::stages);
 }

@@ -163,7 +163,7 @@ TEST_CASE("scene parts: each closed option's key admits exactly its values, each
   Scene s = scene_defaults();
   for (const auto& [name, inside] : std::vector<std::pair<std::string, bool>>{
            {"cummins_rudman", false}, {"constrained", true}, {"orthogonal", true}}) {
-    s.projection = name;
+    s.projection = projection_methods().at(name);
     CHECK(s.pressure_in_f() == inside);
   }
 }

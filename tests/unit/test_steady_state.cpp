@@ -134,8 +134,9 @@ TEST_CASE("steady state, window means: the change of the mean over the two lates
     CHECK(m.rate() == doctest::Approx(1.0 / 15).epsilon(kRoundOff));
   }
   SUBCASE("the measure's names") {
-    CHECK(steady_measure_from("window_means") == SteadyMeasure::window_means);
-    CHECK(steady_measure_from("intervals") == SteadyMeasure::intervals);
-    CHECK_THROWS_AS(steady_measure_from("mean"), std::invalid_argument);
+    CHECK(steady_measures().at("window_means") == SteadyMeasure::window_means);
+    CHECK(steady_measures().at("intervals") == SteadyMeasure::intervals);
+    CHECK(steady_measures().name(SteadyMeasure::intervals) == "intervals");
+    CHECK_THROWS_AS(steady_measures().at("mean"), std::out_of_range);
   }
 }

@@ -8,16 +8,20 @@
 
 namespace arksph {
 
-ViscousJacobian::ViscousJacobian(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs) {
+double viscous_dependency_radius(const Scene& scene, double Rs) {
   const double dx = scene.spacing;
-  const double Rs = rhs.ghost_depth();  // the support radius, or twice that for the two-pass model
   bool no_slip_wall = false;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     no_slip_wall |= scene.sides[s].kind == SideKind::wall && scene.sides[s].slip == SlipKind::no_slip;
   const bool extrapolated = no_slip_wall && scene.dimension == 2 &&
                             wall_velocity_rules().at(scene.wall_velocity).make != nullptr;
-  radius_ = extrapolated ? std::max(Rs, std::hypot(Rs + dx, std::max(Rs, 3.0 * dx))) : Rs;
-  skin_ = 0.5 * dx;
+  return extrapolated ? std::max(Rs, std::hypot(Rs + dx, std::max(Rs, 3.0 * dx))) : Rs;
+}
+
+ViscousJacobian::ViscousJacobian(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs) {
+  // Rs: the support radius, or twice that for the two-pass model
+  radius_ = viscous_dependency_radius(scene, rhs.ghost_depth());
+  skin_ = 0.5 * scene.spacing;
   for (int k = 0; k < scene.dimension; ++k) {
     periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
     len_[k] = scene.max[k] - scene.min[k];

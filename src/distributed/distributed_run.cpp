@@ -247,9 +247,12 @@ class RankProcess final : public RunProcess {
 };
 
 // The model's projection terms name the solve over the ranks (summary.json reports the rank's
-// projection as one process's).
+// projection as one process's), and so does the IMEX term (SPGMR for KLU).
 void RankProcess::built(Model& model) {
   model_ = &model;
+  const std::string imex_klu = "imex:viscosity_implicit+klu";
+  for (std::string& term : model.terms)
+    if (term.compare(0, imex_klu.size(), imex_klu) == 0) term = "imex:viscosity_implicit+spgmr_jacobi" + term.substr(imex_klu.size());
 #ifdef ARKSPH_WITH_HYPRE
   for (std::string& term : model.terms)
     if (term == "projection:ppe-" + scene_.ppe_solver) term = "projection:ppe-hypre";

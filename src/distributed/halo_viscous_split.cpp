@@ -92,17 +92,8 @@ void HaloViscousSplit::diagonal(double* d) {
   const std::size_t all = rhs.layout().n;
   const std::vector<std::vector<std::uint32_t>> near =
       dependency_pattern(ff.x.data(), ff.y.data(), all, radius_, PeriodicAxes{});
-  std::vector<int> colour(all, -1);
-  std::vector<std::size_t> taken(all + 1, all);  // taken[c] == j: colour c is a neighbour's of j
   int colours = 0;
-  for (std::size_t j = 0; j < all; ++j) {
-    for (std::uint32_t k : near[j])
-      if (colour[k] >= 0) taken[static_cast<std::size_t>(colour[k])] = j;
-    int c = 0;
-    while (taken[static_cast<std::size_t>(c)] == j) ++c;
-    colour[j] = c;
-    colours = std::max(colours, c + 1);
-  }
+  const std::vector<int> colour = greedy_colouring(near, false, colours);
   std::fill(d, d + L.size(), 0.0);
   qu_.resize(all);
   qv_.resize(all);

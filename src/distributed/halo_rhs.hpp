@@ -55,7 +55,10 @@ class HaloRhs {
   const double* evaluated_state() const { return y_all_.data(); }
   // Frees the evaluator until the next eval, which builds it anew (build_evaluator): while rank 0
   // holds a whole frame or checkpoint.
-  void release_storage() { evaluator_.reset(); }
+  void release_storage() {
+    evaluator_.reset();
+    ++builds_;  // the fields of the last eval are gone
+  }
   long exchanges() const { return exchanges_; }  // halo exchanges (each with a new neighbour list) so far
   // This rank's wall time in eval: halo exchanges (geometry, copies, the evaluator's new particle
   // set), halo updates (the all-to-all of each eval, waiting for the other ranks included) and the
@@ -78,7 +81,8 @@ class HaloRhs {
   // for the velocities (u, v) of this rank's particles, their halo copies given their owners'
   // values (one all-to-all), at the fields of the last eval.
   void viscous_acceleration(const double* u, const double* v, double* au, double* av);
-  // Evaluators built so far (an exchange or release_storage replaces the fields of the last eval).
+  // Changes whenever the fields of the last eval are replaced or freed (an exchange, a new
+  // evaluator, release_storage).
   long builds() const { return builds_; }
   // RhsEvaluator::set_slip_origin, kept for the evaluators of later exchanges (the projection's
   // body-force split: the stages of a step carry the increment (t - t0) g, projection/projection.hpp).

@@ -16,6 +16,7 @@
 #include "core/seconds_since.hpp"
 #include "diagnostics/flow_metrics.hpp"
 #include "distributed/halo_rhs.hpp"
+#include "distributed/halo_viscous_split.hpp"
 #ifdef ARKSPH_WITH_HYPRE
 #include "distributed/halo_domain.hpp"
 #endif
@@ -23,6 +24,7 @@
 #include "distributed/rank_frame.hpp"
 #include "distributed/rank_particles.hpp"
 #include "integrate/erk_integrator.hpp"
+#include "integrate/imex_integrator.hpp"
 #include "io/frame_order.hpp"
 #include "io/pvtp_writer.hpp"
 #include "io/vtp_writer.hpp"
@@ -108,7 +110,9 @@ void check_distributable(const Scene& scene, int ranks) {
     if (!scene.fluid_region.empty())  // the surface's p = 0 rows are not in hypre's rows yet
       throw InputError(scene.source + ": fluid.region (a free surface) under scheme " + scene.scheme + on);
   }
-  if (scene.imex) throw InputError(scene.source + ": time.imex" + on);
+  // time.imex: ARKStep with the Krylov solve (distributed/halo_viscous_split.hpp), without a
+  // projection (the constrained one's f_E over the ranks is not wired to the split).
+  if (scene.imex && traits.projection) throw InputError(scene.source + ": time.imex under scheme " + scene.scheme + on);
   if (scene.dimension != 2)
     throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
 }
@@ -116,6 +120,15 @@ void check_distributable(const Scene& scene, int ranks) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// time.imex: the Krylov solve of the stage systems (integrate/imex_krylov.cpp). ARKODE ends SPGMR
+// when the preconditioned residual's WRMS norm is below eps_lin times the Newton tolerance (0.1 of
+// the step's error tolerance); 1e-6 (ARKODE's default 0.05) leaves a stage error of the order of
+// 1e-7 rtol, so that the ranks' run follows one process's (KLU, a direct solve) to about 1e-10
+// relative. Jacobi-preconditioned GMRES needs tens of iterations at the steps implicit viscosity
+// allows (gamma nu / dx^2 of order 100): a Krylov space of 50 with up to 10 restarts.
+constexpr double kKrylovEpsLin = 1e-6;
+constexpr int kKrylovDimension = 50, kKrylovRestarts = 10;
 
 // One rank of a decomposed run: its particles with their halo, the projection over the ranks,
 // migration at the sync points, frames reduced over the ranks and written by rank 0 (or as pieces),
@@ -187,7 +200,7 @@ class RankProcess final : public RunProcess {
 
   // ARKODE gave up: on every rank alike (global norms, agreed flags).
   Verdict numerical_failure(double, const std::string& what) override {
-    return parallel::agree(comm_, {3, what, erk().failure_names_entry()});
+    return parallel::agree(comm_, {3, what, arkode().failure_names_entry()});
   }
   Verdict out_of_memory(double) override { throw; }
   void report(RunTotals& totals) override;
@@ -224,8 +237,9 @@ class RankProcess final : public RunProcess {
   std::vector<std::int64_t> pressure_ids_;  // the ids of the rank's particles at the last projection
   std::vector<double> frame_d0_, frame_x_, frame_y_, frame_p_;  // the frame's (frame_source)
   ErkOptions eo_;
-  TimeStepper stepper_;  // ERKStep (time.imex is refused)
-  ErkIntegrator& erk() { return static_cast<ErkIntegrator&>(*stepper_.integrator); }
+  std::optional<HaloViscousSplit> split_;  // time.imex
+  TimeStepper stepper_;  // ERKStep, or ARKStep over split_ with time.imex
+  ArkodeIntegrator& arkode() { return static_cast<ArkodeIntegrator&>(*stepper_.integrator); }
   long migrations_ = 0;
   // The fewest particles a rank owned after a deal or a migration (summary.json mpi.fewest_particles).
   std::int64_t fewest_ = 0;
@@ -233,9 +247,12 @@ class RankProcess final : public RunProcess {
 };
 
 // The model's projection terms name the solve over the ranks (summary.json reports the rank's
-// projection as one process's).
+// projection as one process's), and so does the IMEX term (SPGMR for KLU).
 void RankProcess::built(Model& model) {
   model_ = &model;
+  const std::string imex_klu = "imex:viscosity_implicit+klu";
+  for (std::string& term : model.terms)
+    if (term.compare(0, imex_klu.size(), imex_klu) == 0) term = "imex:viscosity_implicit+spgmr_jacobi" + term.substr(imex_klu.size());
 #ifdef ARKSPH_WITH_HYPRE
   for (std::string& term : model.terms)
     if (term == "projection:ppe-" + scene_.ppe_solver) term = "projection:ppe-hypre";
@@ -353,10 +370,21 @@ void RankProcess::start_integrator(double t, double h, const StepStats& counters
     f_->eval(t, y.data(), ydot.data());  // the halo, and the acceleration for the stability limit
   }
   eo_.initial_dt = h > 0 ? h : stable(y.data());
-  HaloRhs& f = *f_;
-  stepper_ = make_time_stepper(
-      scene_, [&f](double tt, const double* yl, double* yd) { f.eval(tt, yl, yd); }, eo_, y, t, projection_,
-      [this] { pressure_ids_ = mine_->ids(); });
+  if (scene_.imex) {  // after the evaluation above, whose acceleration is the whole f's, as one process's at t = 0
+    if (!split_) split_.emplace(scene_, *f_, *mine_, comm_);
+    split_->forget();
+    ImexOptions io = imex_options(scene_, eo_);
+    io.krylov_eps_lin = kKrylovEpsLin;
+    io.krylov_dimension = kKrylovDimension;
+    io.krylov_restarts = kKrylovRestarts;
+    stepper_ = TimeStepper{};
+    stepper_.integrator = std::make_unique<ImexIntegrator>(split_->functions(), y, t, io);
+  } else {
+    HaloRhs& f = *f_;
+    stepper_ = make_time_stepper(
+        scene_, [&f](double tt, const double* yl, double* yd) { f.eval(tt, yl, yd); }, eo_, y, t, projection_,
+        [this] { pressure_ids_ = mine_->ids(); });
+  }
   integrator().set_counter_offset(counters);
 }
 
@@ -470,7 +498,7 @@ void RankProcess::migrate(double at) {
   sort_mine();
   f_->set_decomposition(*decomposition_);
   if (projection_) projection_->particles_moved();
-  erk().resize(mine_->state(), at, h);
+  arkode().resize(mine_->state(), at, h);
   count_fewest();
   ++migrations_;
   migration_seconds_ += seconds_since(t0);

@@ -118,9 +118,44 @@ void HaloRhs::build_evaluator() {
   RhsOptions options;
   options.pairs_at_every_f = scene_.pressure_in_f();  // the constrained projection walks the pairs of each f
   options.derivative_count = F.size();                // the halo copies' derivatives are discarded
+  options.imex_split = imex_split_;
   evaluator_ = std::make_unique<RhsEvaluator>(scene_, set, make_kernel(scene_.kernel, model_.h, scene_.dimension),
                                               terms_from_scene(scene_, model_.sound_speed), options);
   evaluator_->set_slip_origin(slip_on_, slip_t0_);
+  ++builds_;
+}
+
+void HaloRhs::set_imex_split(bool on) {
+  imex_split_ = on;
+  if (!evaluator_) return;
+  RhsOptions options = evaluator_->options();
+  options.imex_split = on;
+  evaluator_->set_options(options);
+}
+
+void HaloRhs::implicit_part(double* ydot_i) {
+  const StateLayout& L = evaluator_->layout();
+  resize_with_headroom(ydot_all_, L.size());
+  evaluator_->implicit_part(ydot_all_.data());
+  const std::size_t n = owned_.fields().size();
+  for (std::size_t b = 0; b < blocks_.size(); ++b)
+    std::copy_n(ydot_all_.begin() + static_cast<long>(b * L.n), n, ydot_i + b * n);
+}
+
+void HaloRhs::viscous_acceleration(const double* u, const double* v, double* au, double* av) {
+  const std::size_t n = owned_.fields().size(), all = evaluator_->layout().n;
+  own_u_.assign(u, u + n);
+  own_v_.assign(v, v + n);
+  const std::vector<std::vector<double>> copies = halo_values({&own_u_, &own_v_});
+  all_u_ = own_u_;
+  all_v_ = own_v_;
+  all_u_.insert(all_u_.end(), copies[0].begin(), copies[0].end());
+  all_v_.insert(all_v_.end(), copies[1].begin(), copies[1].end());
+  all_au_.resize(all);
+  all_av_.resize(all);
+  evaluator_->viscous_acceleration(all_u_.data(), all_v_.data(), all_au_.data(), all_av_.data());
+  std::copy_n(all_au_.begin(), n, au);
+  std::copy_n(all_av_.begin(), n, av);
 }
 
 void HaloRhs::set_slip_origin(bool on, double t0) {

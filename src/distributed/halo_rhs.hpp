@@ -64,7 +64,10 @@ class HaloRhs {
   const double* evaluated_state() const { return y_all_.data(); }
   // Frees the evaluator until the next eval, which builds it anew (build_evaluator): while rank 0
   // holds a whole frame or checkpoint.
-  void release_storage() { evaluator_.reset(); }
+  void release_storage() {
+    evaluator_.reset();
+    ++builds_;  // the fields of the last eval are gone
+  }
   long exchanges() const { return exchanges_; }  // halo exchanges (each with a new neighbour list) so far
   // This rank's wall time in eval: halo exchanges (geometry, copies, the evaluator's new particle
   // set), halo updates (the all-to-all of each eval, waiting for the other ranks included) and the
@@ -78,6 +81,18 @@ class HaloRhs {
   // projection's row numbers and pressures: halo_domain.hpp). One all-to-all along the exchange's
   // send lists.
   std::vector<std::vector<double>> halo_values(const std::vector<const std::vector<double>*>& own) const;
+  // time.imex (RhsOptions::imex_split) for this evaluator and those of later exchanges: eval's ydot
+  // holds f_E, implicit_part f_I (distributed/halo_viscous_split.hpp).
+  void set_imex_split(bool on);
+  // f_I of the last eval with the split, this rank's rows in its own layout (size y).
+  void implicit_part(double* ydot_i);
+  // Collective. The viscous acceleration of this rank's particles (RhsEvaluator::viscous_acceleration)
+  // for the velocities (u, v) of this rank's particles, their halo copies given their owners'
+  // values (one all-to-all), at the fields of the last eval.
+  void viscous_acceleration(const double* u, const double* v, double* au, double* av);
+  // Changes whenever the fields of the last eval are replaced or freed (an exchange, a new
+  // evaluator, release_storage).
+  long builds() const { return builds_; }
   // RhsEvaluator::set_slip_origin, kept for the evaluators of later exchanges (the projection's
   // body-force split: the stages of a step carry the increment (t - t0) g, projection/projection.hpp).
   void set_slip_origin(bool on, double t0);
@@ -106,6 +121,9 @@ class HaloRhs {
   Seconds seconds_;
   bool slip_on_ = false;
   double slip_t0_ = 0;
+  bool imex_split_ = false;
+  long builds_ = 0;
+  std::vector<double> own_u_, own_v_, all_u_, all_v_, all_au_, all_av_;  // scratch of viscous_acceleration
 };
 
 }  // namespace arksph::distributed

@@ -197,6 +197,7 @@ void ArkodeIntegrator::resize(const std::vector<double>& y, double t, double h) 
   destroy_state_vector(y_);
   y_ = fresh;
   n_ = y.size();
+  resized();
   restart_at(t, h);
 }
 
@@ -218,6 +219,7 @@ StepStats ArkodeIntegrator::stats() const {
   s.linear_setups += offset_.linear_setups;
   s.jacobian_evals += offset_.jacobian_evals;
   s.symbolic_analyses += offset_.symbolic_analyses;
+  s.linear_iters += offset_.linear_iters;
   module_.get_last_step(mem_, &s.last_step);
   if (s.last_step == 0) s.last_step = offset_.last_step;
   return s;

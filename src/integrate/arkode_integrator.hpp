@@ -107,6 +107,9 @@ class ArkodeIntegrator : public TimeIntegrator {
   // XStepReInit at (t, state()) with the module's callbacks, and the derived class's own
   // counters back to zero: the start of a new integrator.
   virtual void reinit(double t) = 0;
+  // After resize replaced the state vector, before the re-initialisation: what the derived class
+  // keeps of the old length (an iterative linear solver's vectors) made anew.
+  virtual void resized() {}
   // The counters since the creation or the last reinit (without the offset of a restart).
   virtual StepStats module_stats() const = 0;
 

@@ -85,4 +85,26 @@ std::vector<std::vector<std::uint32_t>> dependency_pattern_brute(const double* x
   return pat;
 }
 
+std::vector<int> greedy_colouring(const std::vector<std::vector<std::uint32_t>>& near, bool distance2, int& colours) {
+  const std::size_t n = near.size();
+  std::vector<int> colour(n, -1);
+  std::vector<std::size_t> stamp(n + 1, n);  // stamp[c] == j: colour c is taken for vertex j
+  colours = 0;
+  const auto take = [&](std::uint32_t k, std::size_t j) {
+    if (colour[k] >= 0) stamp[static_cast<std::size_t>(colour[k])] = j;
+  };
+  for (std::size_t j = 0; j < n; ++j) {
+    for (std::uint32_t a : near[j])
+      if (distance2)
+        for (std::uint32_t k : near[a]) take(k, j);
+      else
+        take(a, j);
+    int c = 0;
+    while (stamp[static_cast<std::size_t>(c)] == j) ++c;
+    colour[j] = c;
+    colours = std::max(colours, c + 1);
+  }
+  return colour;
+}
+
 }  // namespace arksph

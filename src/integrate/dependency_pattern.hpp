@@ -23,4 +23,11 @@ std::vector<std::vector<std::uint32_t>> dependency_pattern(const double* x, cons
 std::vector<std::vector<std::uint32_t>> dependency_pattern_brute(const double* x, const double* y, std::size_t n,
                                                                  double radius, const PeriodicAxes& axes);
 
+// Greedy colouring of the graph `near` (symmetric, each vertex its own neighbour), vertices in
+// index order, each taking the smallest colour free: at distance 1 no two neighbours share a
+// colour; at distance 2 neither do two vertices with a common neighbour (the columns of a colour
+// then share no row: the probes of the viscous Jacobian). Returns each vertex's colour; `colours`
+// is set to their number.
+std::vector<int> greedy_colouring(const std::vector<std::vector<std::uint32_t>>& near, bool distance2, int& colours);
+
 }  // namespace arksph

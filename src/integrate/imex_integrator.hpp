@@ -10,6 +10,11 @@
 // frozen state (ARKStepGetNonlinearSystemData: zpred + sdata on those rows), and with `linear`
 // (ARKStepSetLinear, time dependent) one Newton iteration per stage is exact. The KLU symbolic
 // analysis is kept while the sparsity pattern of J is unchanged (SUNLinSol_KLUReInit when it changes).
+//
+// With ImexKrylov (a run over several MPI ranks, whose state vector spans the ranks) the stage
+// system is solved matrix-free instead: SUNLinSol_SPGMR on M = I - gamma J with J v given by the
+// caller at the stage's frozen state, left-preconditioned by Jacobi, 1 / (1 - gamma diag(J))
+// (imex_krylov.cpp).
 #pragma once
 #include <functional>
 #include <string>
@@ -33,17 +38,30 @@ struct SparseCsr {
   long pattern_version = 0;
 };
 
+// J = df_I/dy as an operator, for the Krylov solve: `linearize` is called (collectively) at the
+// frozen state of a stage before J v or diag(J) are asked for; both are J's at that state.
+struct ImexKrylov {
+  std::function<void(double t, const double* y)> linearize;
+  std::function<void(const double* v, double* Jv)> times;  // Jv = J v (collective)
+  std::function<void(double* diagonal)> diagonal;          // diag(J) (collective)
+};
+
 struct ImexFunctions {
   RhsFunction explicit_rhs;  // f_E
   RhsFunction implicit_rhs;  // f_I
   // J = df_I/dy at the state y (only its frozen, non-implicit rows matter).
   std::function<const SparseCsr&(double t, const double* y)> jacobian;
+  ImexKrylov krylov;  // set: the Krylov solve (jacobian unused); empty: KLU on `jacobian`
 };
 
 // The step control (StepOptions::stability: the explicit part's limits), the pair and the Newton mode.
 struct ImexOptions : StepOptions {
   std::string pair = "ARK324L2SA";  // ARKODE_<pair>_DIRK_* with ARKODE_<pair>_ERK_*
   bool linear = true;  // f_I linear at frozen positions: ARKStepSetLinear, one Newton iteration per stage
+  // The Krylov solve (ImexFunctions::krylov): ARKStepSetEpsLin's factor (the linear residual's
+  // bound as a fraction of the Newton tolerance) and SPGMR's Krylov dimension and restarts.
+  double krylov_eps_lin = 0.05;
+  int krylov_dimension = 30, krylov_restarts = 5;
 };
 
 // The ARK pairs of ARKODE 6.4 by short name ("ARK324L2SA", ...), their orders and table names.
@@ -65,8 +83,22 @@ class ImexIntegrator final : public ArkodeIntegrator {
   int newton_matrix(double t, N_Vector y, SUNMatrix A, int jok, int* jcur, double gamma);
   int fill_newton_matrix(const SparseCsr& J, SUNMatrix A, double gamma, int* jcur, bool fresh);
   void reinit(double t) override;
+  void resized() override;
   StepStats module_stats() const override;
+  // The Krylov solve (imex_krylov.cpp).
+  void attach_krylov();
+  void freeze(double t, N_Vector y);
+  static int jtimes_setup_cb(double t, N_Vector y, N_Vector fy, void* user_data) noexcept;
+  static int jtimes_cb(N_Vector v, N_Vector Jv, double t, N_Vector y, N_Vector fy, void* user_data, N_Vector) noexcept;
+  static int psetup_cb(double t, N_Vector y, N_Vector fy, int jok, int* jcur, double gamma, void* user_data) noexcept;
+  static int psolve_cb(double t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z, double gamma, double delta, int lr,
+                       void* user_data) noexcept;
   ImexFunctions f_;
+  ImexOptions opt_;
+  bool krylov_ = false;
+  N_Vector diagonal_ = nullptr;  // diag(J) of the last preconditioner set-up
+  bool have_diagonal_ = false;
+  long linear_iters_kept_ = 0;  // of the solvers replaced since the last reinit
   bool linear_ = true;
   const SparseCsr* last_J_ = nullptr;  // the last J handed over (stays valid: owned by the caller)
   N_Vector frozen_ = nullptr;

@@ -14,7 +14,7 @@ struct StepStats {
   // linear-solver setups (Newton matrix M = I - gamma J and its KLU factorisation), Jacobian
   // evaluations and KLU symbolic analyses.
   long implicit_rhs_evals = 0, newton_iters = 0, newton_fails = 0, linear_setups = 0, jacobian_evals = 0,
-       symbolic_analyses = 0;
+       symbolic_analyses = 0, linear_iters = 0;  // linear_iters: Krylov iterations (imex_krylov.cpp)
 };
 
 class TimeIntegrator {

@@ -61,11 +61,13 @@ const std::vector<Param>& time_params() {
 const std::vector<Param>& imex_params() {
   static const std::vector<Param> params = {
       flag("time.imex", false)
-          .doc("ARKStep IMEX: viscous term implicit (Newton + KLU), no viscous step limit; time.integrator unused")
+          .doc("ARKStep IMEX: viscous term implicit (Newton + KLU; on MPI ranks Newton + SPGMR, matrix-free, Jacobi), "
+               "no viscous step limit; time.integrator unused")
           .to(&Scene::imex),
       choice("time.imex_pair", "ARK324L2SA").family("imex_pair").doc("imex: ARKODE additive pair").to(&Scene::imex_pair),
       flag("time.imex_linear", false)
-          .doc("imex: true: ARKStepSetLinear, exact J at every stage, one Newton iteration; false: Newton, J reused")
+          .doc("imex: true: ARKStepSetLinear, exact J at every stage, one Newton iteration; false: Newton, J reused "
+               "(on MPI ranks J v is always at the stage's state)")
           .to(&Scene::imex_linear),
   };
   return params;

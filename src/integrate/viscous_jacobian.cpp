@@ -8,16 +8,20 @@
 
 namespace arksph {
 
-ViscousJacobian::ViscousJacobian(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs) {
+double viscous_dependency_radius(const Scene& scene, double Rs) {
   const double dx = scene.spacing;
-  const double Rs = rhs.ghost_depth();  // the support radius, or twice that for the two-pass model
   bool no_slip_wall = false;
   for (int s = 0; s < 2 * scene.dimension; ++s)
     no_slip_wall |= scene.sides[s].kind == SideKind::wall && scene.sides[s].slip == SlipKind::no_slip;
   const bool extrapolated = no_slip_wall && scene.dimension == 2 &&
                             wall_velocity_rules().at(scene.wall_velocity).make != nullptr;
-  radius_ = extrapolated ? std::max(Rs, std::hypot(Rs + dx, std::max(Rs, 3.0 * dx))) : Rs;
-  skin_ = 0.5 * dx;
+  return extrapolated ? std::max(Rs, std::hypot(Rs + dx, std::max(Rs, 3.0 * dx))) : Rs;
+}
+
+ViscousJacobian::ViscousJacobian(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs) {
+  // Rs: the support radius, or twice that for the two-pass model
+  radius_ = viscous_dependency_radius(scene, rhs.ghost_depth());
+  skin_ = 0.5 * scene.spacing;
   for (int k = 0; k < scene.dimension; ++k) {
     periodic_[k] = scene.sides[2 * k].kind == SideKind::periodic;
     len_[k] = scene.max[k] - scene.min[k];
@@ -48,18 +52,7 @@ void ViscousJacobian::build_pattern() {
   }
   pat_ = dependency_pattern(f.x.data(), two_d ? f.y.data() : nullptr, n, radius_ + skin_, axes);
   // Greedy distance-2 colouring: two columns share a colour only if no row holds both.
-  color_.assign(n, -1);
-  std::vector<std::size_t> stamp(n + 1, n);  // stamp[c] == j: colour c is taken for column j
-  ncolors_ = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    for (std::uint32_t a : pat_[j])
-      for (std::uint32_t k : pat_[a])
-        if (color_[k] >= 0) stamp[static_cast<std::size_t>(color_[k])] = j;
-    int c = 0;
-    while (stamp[static_cast<std::size_t>(c)] == j) ++c;
-    color_[j] = c;
-    ncolors_ = std::max(ncolors_, c + 1);
-  }
+  color_ = greedy_colouring(pat_, true, ncolors_);
   of_color_.assign(static_cast<std::size_t>(ncolors_), {});
   for (std::size_t j = 0; j < n; ++j) of_color_[static_cast<std::size_t>(color_[j])].push_back(static_cast<std::uint32_t>(j));
   slot_.assign(n * static_cast<std::size_t>(ncolors_), -1);

@@ -26,6 +26,9 @@
 
 namespace arksph {
 
+// R_dep above for the scene, with the viscous terms' reach `ghost_depth` (RhsEvaluator::ghost_depth).
+double viscous_dependency_radius(const Scene& scene, double ghost_depth);
+
 class ViscousJacobian {
  public:
   ViscousJacobian(const Scene& scene, RhsEvaluator& rhs);

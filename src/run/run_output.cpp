@@ -199,6 +199,7 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, const Ru
     im.set("newton_iterations", stats.newton_iters).set("newton_failures", stats.newton_fails);
     im.set("linear_setups", stats.linear_setups).set("jacobian_evals", stats.jacobian_evals);
     im.set("klu_symbolic_analyses", stats.symbolic_analyses);
+    im.set("linear_iterations", stats.linear_iters);  // SPGMR over ranks; 0 with KLU (one process)
     j.set("imex", im);
   }
   Json timing = Json::object();

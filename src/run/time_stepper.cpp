@@ -43,12 +43,16 @@ TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOp
     ts.split->set_constraint([constrained](const double* y, double* fe, const double* au, const double* av) {
       constrained->constrain(y, fe, au, av);
     });
+  ts.integrator = std::make_unique<ImexIntegrator>(ts.split->functions(), y0, t0, imex_options(scene, eo));
+  return ts;
+}
+
+ImexOptions imex_options(const Scene& scene, const StepOptions& eo) {
   ImexOptions io;
   static_cast<StepOptions&>(io) = eo;  // the step control of the run
   io.pair = scene.imex_pair;
   io.linear = scene.imex_linear;
-  ts.integrator = std::make_unique<ImexIntegrator>(ts.split->functions(), y0, t0, io);
-  return ts;
+  return io;
 }
 
 }  // namespace arksph

@@ -35,6 +35,9 @@ struct TimeStepper {
 // acceleration (under IMEX a projection must be constrained: no post-processing).
 TimeStepper make_time_stepper(const Scene& scene, RhsEvaluator& rhs, const ErkOptions& eo, const std::vector<double>& y0,
                               double t0, Projection* projection = nullptr);
+// The IMEX options of the run: the step control of `eo` (the run's ERK options), time.imex_pair and
+// time.imex_linear.
+ImexOptions imex_options(const Scene& scene, const StepOptions& eo);
 // The same with ERKStep (no time.imex) and f given as a function (one rank's, over its particles
 // and their halo); `projected` is called after each projection (after a step or stage, or the
 // constrained one inside f), when the projection's pressure is that of the current particles.

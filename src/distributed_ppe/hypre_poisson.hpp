@@ -29,7 +29,6 @@
 namespace arksph::distributed_ppe {
 
 struct HypreSolveReport : SolveReport {
-  double setup_seconds = 0;  // matrix and vectors handed to hypre, BoomerAMG set up (refactored_symbolic)
   double solve_seconds = 0;  // PCG iterations
 };
 

@@ -127,6 +127,7 @@ void Projection::constrain(const double* y, double* ydot, const double* au, cons
   const auto t0 = std::chrono::steady_clock::now();
   const SolveReport rep = constrained_->constrain(y, ydot, au, av);
   stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
+  stats_.setup_seconds += rep.setup_seconds;
   if (gravity_.active) report(constrained_->pressure());
   const double s = seconds_since(t0);
   stats_.seconds += s;
@@ -243,6 +244,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   stats_.assembly_seconds += assembly;
   stats_.solve_seconds += seconds_since(ts) - assembly;
   stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
+  stats_.setup_seconds += rep.setup_seconds;
   // The level of P is free (Neumann walls) but matters to the symmetric gradient of eq. 11 on
   // disordered particles: zero mean, or zero minimum (P >= 0: pair forces never attract), over
   // every particle, then the offset.

@@ -42,6 +42,7 @@ struct ProjectionStats {
   double seconds = 0;           // right-hand side at r* + assembly + solve + correction
   double solve_seconds = 0;     // the linear solve alone
   double assembly_seconds = 0;  // divergence, source and matrix of the particle PPE
+  double setup_seconds = 0;     // of solve_seconds, the solver's set-up (SolveReport::setup_seconds)
   double last_residual = 0, max_residual = 0;
   long iterations = 0, symbolic_analyses = 0;  // isph-gpps: symbolic_analyses counts grid factorisations
   // One solve's counts: its iterations, whether it set up its factorisation or hierarchy anew, and

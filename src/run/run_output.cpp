@@ -219,6 +219,7 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, const Ru
     Json ppe_json = Json::object();
     ppe_json.set("solver", model_.projection->solver_name()).set("solves", ps.solves);
     ppe_json.set("solve_seconds", ps.solve_seconds).set("assembly_seconds", ps.assembly_seconds);
+    ppe_json.set("setup_seconds", ps.setup_seconds);
     ppe_json.set("seconds_per_solve", ps.solves ? ps.seconds / ps.solves : 0.0);
     ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);

@@ -165,9 +165,12 @@ TEST_CASE("cg_amg: a hierarchy kept from an earlier matrix still gives the exact
   REQUIRE(first.b.size() == second.b.size());
   auto amg = make_poisson_solver("cg_amg", 1e-12);
   std::vector<double> p(first.b.size(), 0.0), p_klu(first.b.size(), 0.0);
-  CHECK(amg->solve(first.A, first.b, p).refactored_symbolic);
+  const SolveReport built = amg->solve(first.A, first.b, p);
+  CHECK(built.refactored_symbolic);
+  CHECK(built.setup_seconds > 0);  // the hierarchy's set-up is reported (summary.json ppe.setup_seconds)
   const SolveReport r = amg->solve(second.A, second.b, p);
-  make_poisson_solver("klu", 1e-12)->solve(second.A, second.b, p_klu);
+  const SolveReport klu = make_poisson_solver("klu", 1e-12)->solve(second.A, second.b, p_klu);
+  CHECK(klu.setup_seconds > 0);  // its analysis and factorisation
   const double diff = relative_difference(p, p_klu);
   MESSAGE("second matrix: ", r.iterations, " iterations with the first one's hierarchy, max |p - p_klu| / max |p| ", diff);
   CHECK_FALSE(r.refactored_symbolic);

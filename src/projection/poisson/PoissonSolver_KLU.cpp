@@ -1,10 +1,12 @@
 // Direct solve of the pressure Poisson equation by SuiteSparse KLU (AMD ordering, no BTF).
 #include <klu.h>
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "core/seconds_since.hpp"
 #include "projection/poisson/poisson_solver.hpp"
 
 namespace arksph {
@@ -21,6 +23,7 @@ class PoissonSolverKlu final : public PoissonSolver {
 
   SolveReport solve(const SparseMatrix& A, const std::vector<double>& b, std::vector<double>& p) override {
     SolveReport rep;
+    const auto t0 = std::chrono::steady_clock::now();
     const int n = static_cast<int>(A.rows());
     const bool same_pattern = symbolic_ && n == n_ && pattern_equal(A);
     if (!same_pattern) {
@@ -41,6 +44,7 @@ class PoissonSolverKlu final : public PoissonSolver {
       numeric_ = klu_factor(col_.data(), row_.data(), values, symbolic_, &common_);
       if (!numeric_) throw NumericalFailure("KLU factor failed (singular pressure matrix?) (status " + std::to_string(common_.status) + ")");
     }
+    rep.setup_seconds = seconds_since(t0);
     p = b;
     if (!klu_solve(symbolic_, numeric_, n, 1, p.data(), &common_))
       throw NumericalFailure("KLU solve failed (status " + std::to_string(common_.status) + ")");

@@ -26,6 +26,10 @@ struct SolveReport {
   double relative_residual = 0;  // |A p - b| / |b|
   int iterations = 0;            // 1 for a direct solve
   bool refactored_symbolic = false;
+  // Of the solve's time, the set-up of its factorisation or preconditioner: KLU's analysis and
+  // (re)factorisation, cg_amg's hierarchy (or the re-pointing of its finest level), hypre's matrix
+  // and vectors and BoomerAMG's set-up. 0 for plain CG.
+  double setup_seconds = 0;
 };
 
 // NumericalFailure (exit 3) for an iterative solver that stopped at its iteration limit above the

@@ -66,7 +66,7 @@ class Shifting final : public ParticleTerm<Shifting> {
   Shifting(double coefficient, double speed, double limit, double h, double w_dx, double v0, double anti_clump,
            bool density, bool free_surface, int dimension)
       : scale_(coefficient * h * speed * v0),
-        band_(free_surface ? kSurfaceBand * dimension / v0 : 0.0),
+        band_(free_surface && speed > 0 ? kSurfaceBand * dimension / v0 : 0.0),  // U = 0: du = 0 anyway
         anti_clump_(anti_clump),
         inv_limit2_(limit > 0 && speed > 0 ? 1.0 / (limit * speed * limit * speed) : 0.0),  // U = 0: du = 0
         clump_scale_(std::sqrt(std::sqrt(anti_clump)) / w_dx),
@@ -273,7 +273,7 @@ class Shifting final : public ParticleTerm<Shifting> {
   const ContinuitySzewc* continuity_ = nullptr;
   const ViscosityMorris* viscosity_ = nullptr;
   double scale_;      // A h U V0
-  double band_;       // kSurfaceBand d / V0 with a free surface, else 0 (no surface treatment)
+  double band_;       // kSurfaceBand d / V0 with a free surface and U > 0, else 0 (no surface treatment)
   double anti_clump_; // R
   double inv_limit2_; // 1 / (s U)^2, 0 without a limit
   double clump_scale_; // R^(1/4) / W(dx): R (W / W(dx))^4 = ((clump_scale_ W)^2)^2

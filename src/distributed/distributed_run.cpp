@@ -107,8 +107,6 @@ void check_distributable(const Scene& scene, int ranks) {
       throw InputError(scene.source + ": method.correction_solver = " + scene.correction_solver + on);
     if (scene.ppe_operator != PpeOperator::approximate)
       throw InputError(scene.source + ": method.ppe_operator = " + projection_options().ppe_operator.name(scene.ppe_operator) + on);
-    if (!scene.fluid_region.empty())  // the surface's p = 0 rows are not in hypre's rows yet
-      throw InputError(scene.source + ": fluid.region (a free surface) under scheme " + scene.scheme + on);
   }
   // time.imex: ARKStep with the Krylov solve (distributed/halo_viscous_split.hpp), without a
   // projection (the constrained one's f_E over the ranks is not wired to the split).

@@ -1,6 +1,7 @@
 #include "distributed/halo_poisson.hpp"
 
 #include <chrono>
+#include <cstddef>
 
 namespace arksph::distributed {
 
@@ -29,7 +30,21 @@ SolveReport HaloPoisson::solve(const FluidFields& f, const std::vector<double>& 
   row_of_.resize(n + halo_rows.size());
   for (std::size_t a = 0; a < n; ++a) row_of_[a] = range_.first + static_cast<std::int64_t>(a);
   for (std::size_t k = 0; k < halo_rows.size(); ++k) row_of_[n + k] = static_cast<distributed_ppe::GlobalRow>(halo_rows[k]);
-  distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, source, dt, rows_);
+  if (given_.empty()) {
+    distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, source, dt, rows_);
+  } else {  // the halo copies' flags and values are their owners'
+    std::vector<double> fixed(n);
+    for (std::size_t a = 0; a < n; ++a) fixed[a] = given_.fixed.at(a) ? 1.0 : 0.0;
+    given_.value.resize(n);
+    std::vector<std::vector<double>> halo = f_.halo_values({&fixed, &given_.value});
+    given_real_.fixed.assign(given_.fixed.begin(), given_.fixed.begin() + static_cast<std::ptrdiff_t>(n));
+    given_real_.value.assign(given_.value.begin(), given_.value.end());
+    for (std::size_t k = 0; k < halo[0].size(); ++k) {
+      given_real_.fixed.push_back(halo[0][k] != 0.0 ? 1 : 0);
+      given_real_.value.push_back(halo[1][k]);
+    }
+    distributed_ppe::assemble_rows(comm_, f, n, row_of_, range_, pinned_row_, source, dt, rows_, given_real_);
+  }
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (p.size() != n) p.assign(n, 0.0);
   return solver_.solve(rows_, p);

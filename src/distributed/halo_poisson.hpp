@@ -3,14 +3,16 @@
 // fixed-point density correction and the constrained projection solve it: the rows of the rank's particles with global numbers, the halo
 // copies carrying their owners' rows (distributed_ppe/ppe_rows.hpp), solved by hypre's
 // BoomerAMG-preconditioned PCG (distributed_ppe/hypre_poisson.hpp) to method.ppe_tolerance. The
-// equation of one particle (a global id fixed for the run) is replaced by P = 0.
+// equation of one particle (a global id fixed for the run) is replaced by P = 0; with rows of given
+// P (a free surface, set_given) those rows fix the level instead, and each halo copy takes its
+// owner's flag and value along the halo.
 //
 // The numbering holds while the rank's particles stay: reset() renumbers at the next solve and
 // starts hypre cold (a new hierarchy), as after a migration or a new deal.
 #pragma once
 #include <cstdint>
-#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "distributed/halo_rhs.hpp"
@@ -31,10 +33,9 @@ class HaloPoisson : public ParticlePoisson {
   // is not), the pinned system's solution out (P = 0 at the pinned particle).
   SolveReport solve(const FluidFields& f, const std::vector<double>& source, double dt, std::vector<double>& p) override;
   std::string name() const override { return "hypre-pcg-boomeramg"; }
-  // A free surface over ranks is refused when the run starts (distributed/distributed_run.cpp).
-  void set_given(DirichletRows given) override {
-    if (!given.empty()) throw std::logic_error("HaloPoisson: rows of given pressure over ranks are not built");
-  }
+  // The rows of given P of the rank's particles (at least its owned count of flags and values), for
+  // the next solves; empty: none.
+  void set_given(DirichletRows given) override { given_ = std::move(given); }
   void reset() override;
   double assembly_seconds() const override { return assembly_seconds_; }
 
@@ -50,6 +51,8 @@ class HaloPoisson : public ParticlePoisson {
   std::vector<double> own_rows_;                     // global row of each owned particle
   std::vector<distributed_ppe::GlobalRow> row_of_;   // owned, then halo copies
   distributed_ppe::LocalRows rows_;
+  DirichletRows given_;       // owned particles
+  DirichletRows given_real_;  // owned, then halo copies
   double assembly_seconds_ = 0;
 };
 

@@ -16,12 +16,18 @@
 // Pressure level (the null space of the Neumann problem) as in one process: the source is shifted to
 // zero mean over all particles (global sum), and the equation of one particle, `pinned_row`, is
 // replaced by P = 0 (its row and column dropped from the others). One process pins its particle 0.
+//
+// A free surface (rows of given P, projection/ppe_assembly.hpp) as in one process: the given rows
+// read P_a = value_a scaled by the diagonal they replace, their columns move to the source of the
+// rows that reference them (a halo copy's flag and value are its owner's), and there is neither a
+// pinned row nor a shift of the source.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "parallel/communicator.hpp"
+#include "projection/ppe_assembly.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph::distributed_ppe {
@@ -53,10 +59,13 @@ struct LocalRows {
 // Collective (the mean of the source). row_of: the global row of every real point of f (owned
 // then halo copies); divergence: div(u*) of the owned particles (at least n_owned values; C&R eq. 17
 // or the difference form, plus any Neumann source, as the one-process projection passes to
-// assemble_ppe). The storage of `out` is reused. Throws std::invalid_argument when the sizes do not
-// match or pinned_row is not a row (the Neumann problem would be left singular).
+// assemble_ppe). given: empty (the Neumann problem), or the rows of given P with a flag and value
+// for every real point of f (owned, then the halo copies with their owners'). The storage of `out`
+// is reused. Throws std::invalid_argument when the sizes do not match or, without given rows,
+// pinned_row is not a row (the Neumann problem would be left singular).
 void assemble_rows(const parallel::Communicator& comm, const FluidFields& f, std::size_t n_owned,
                    const std::vector<GlobalRow>& row_of, const RowRange& range, GlobalRow pinned_row,
-                   const std::vector<double>& divergence, double dt, LocalRows& out);
+                   const std::vector<double>& divergence, double dt, LocalRows& out,
+                   const DirichletRows& given = DirichletRows{});
 
 }  // namespace arksph::distributed_ppe

@@ -2,6 +2,7 @@
 // and its rows on this rank of a decomposition (distributed_ppe::assemble_rows over the rank's
 // particles and halo), on the scene's lattice jittered by up to 0.2 dx so that no two rows are alike.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -65,15 +66,23 @@ inline Domain ppe_domain(const Scene& scene) {
   return d;
 }
 
-// The whole system as one process builds it (every rank alike: the same seed).
+// Rows of given P as a free surface gives them (projection/ppe_assembly.hpp), here a band at the
+// top of the box, y > 0.75, with a P that varies along it, so that a column moved to the wrong row or
+// a given value lost shows in the rows and the solution.
+inline bool in_given_band(double y) { return y > 0.75; }
+inline double given_value(double x, double y) { return 0.3 + 0.1 * std::cos(2 * M_PI * x) + 0.05 * y; }
+
+// The whole system as one process builds it (every rank alike: the same seed); with `given`, the
+// rows of the band above given.
 struct OneProcessPpe {
   Scene scene;
   Model model;  // lattice, h
   ParticleSet particles;  // jittered, wrapped into the box
   std::unique_ptr<RhsEvaluator> rhs;
+  DirichletRows given;  // per particle; empty without the band
   PoissonSystem sys;
 
-  explicit OneProcessPpe(const Scene& s) : scene(s), model(build_model(s)), particles(model.particles) {
+  explicit OneProcessPpe(const Scene& s, bool with_given = false) : scene(s), model(build_model(s)), particles(model.particles) {
     const Domain domain = ppe_domain(scene);
     std::mt19937 rng(2024);
     std::uniform_real_distribution<double> jitter(-0.2 * scene.spacing, 0.2 * scene.spacing);
@@ -89,7 +98,13 @@ struct OneProcessPpe {
     rhs->initial_state(y.data());
     rhs->eval(0.0, y.data(), nullptr);
     const FluidFields& f = rhs->fields();
-    sys = assemble_ppe(f, divergence_cummins_rudman(f), kPpeDt);
+    if (with_given) {
+      for (std::size_t a = 0; a < f.n_real; ++a) {
+        given.fixed.push_back(in_given_band(f.y[a]) ? 1 : 0);
+        given.value.push_back(given_value(f.x[a], f.y[a]));
+      }
+    }
+    assemble_ppe(f, divergence_cummins_rudman(f), kPpeDt, given, sys);
   }
   double radius() const { return rhs->kernel().radius(); }
 };
@@ -106,9 +121,12 @@ struct RankPpe {
   std::unique_ptr<RhsEvaluator> rhs;
   distributed_ppe::LocalRows rows;
 
+  DirichletRows given;  // one's given rows, owned then halo; empty without them
+
   // keep_halo < 1: only that leading fraction of the received halo copies is kept (a test of the
-  // test: a rank that misses copies must assemble other rows).
-  RankPpe(const Communicator& comm, const OneProcessPpe& one, double keep_halo = 1.0)
+  // test: a rank that misses copies must assemble other rows). halo_flags false: the halo copies
+  // are not given rows whatever their owners are (a test of the test for the given rows).
+  RankPpe(const Communicator& comm, const OneProcessPpe& one, double keep_halo = 1.0, bool halo_flags = true)
       : owned(2, N_FIELDS), halo(2, N_FIELDS), scene(one.scene) {
     for (SideSpec& side : scene.sides) side.halo = side.kind == SideKind::periodic;
     const ParticleSet& ps = one.particles;
@@ -163,7 +181,15 @@ struct RankPpe {
     rhs->initial_state(y.data());
     rhs->eval(0.0, y.data(), nullptr);
     const FluidFields& f = rhs->fields();
-    distributed_ppe::assemble_rows(comm, f, owned.size(), row_of, range, pinned, divergence_cummins_rudman(f), kPpeDt, rows);
+    if (!one.given.empty()) {
+      for (std::size_t s = 0; s < f.n_real; ++s) {
+        const std::size_t i = index_of[s];
+        given.fixed.push_back(s < owned.size() || halo_flags ? one.given.fixed[i] : 0);
+        given.value.push_back(one.given.value[i]);
+      }
+    }
+    distributed_ppe::assemble_rows(comm, f, owned.size(), row_of, range, pinned, divergence_cummins_rudman(f), kPpeDt, rows,
+                                   given);
   }
 };
 

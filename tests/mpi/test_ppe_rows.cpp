@@ -71,3 +71,40 @@ TEST_CASE("distributed ppe rows: a pinned row outside the rows or a size mismatc
   CHECK_THROWS_AS(distributed_ppe::assemble_rows(comm, f, mine.owned.size(), short_rows, mine.range, mine.pinned, div, kPpeDt, rows),
                   std::invalid_argument);
 }
+
+// Rows of given P (a free surface): the rank's rows equal one process's, the given rows' columns
+// carried to the source of their neighbours' rows across the rank boundary, with the same
+// tolerances (the same sums in another order; the carried values add terms of the same size).
+TEST_CASE("distributed ppe rows: with rows of given P, equal to the one-process matrix") {
+  const Communicator comm;
+  for (const bool periodic : {false, true}) {
+    const OneProcessPpe one(ppe_scene(periodic), true);
+    const RankPpe mine(comm, one);
+    const RowComparison c = compare_rows(comm, one, mine);
+    std::int64_t fixed = 0;
+    for (char v : one.given.fixed) fixed += v;
+    if (comm.rank() == 0)
+      MESSAGE(std::string(periodic ? "periodic" : "walls"), ", ", comm.size(), " ranks, ", fixed, " given rows: ", c.rows,
+              " rows, ", c.pattern_mismatches, " with other columns, largest value difference ", c.max_value_diff,
+              " of the diagonal, source ", c.max_source_diff);
+    CHECK(fixed > 0);
+    CHECK(fixed < static_cast<std::int64_t>(one.particles.n) / 2);
+    CHECK(c.rows == static_cast<std::int64_t>(one.particles.n));
+    CHECK(c.pattern_mismatches == 0);
+    CHECK(c.max_value_diff <= kValueTolerance);
+    CHECK(c.max_source_diff <= kSourceTolerance);
+  }
+}
+
+// ... and the comparison can fail: halo copies that do not carry their owners' flags leave columns
+// of given rows in the rows next to the rank boundary (2 and 3 ranks; one rank has no halo copies
+// unless the box is periodic).
+TEST_CASE("distributed ppe rows: halo copies without their owners' flags give other rows") {
+  const Communicator comm;
+  const OneProcessPpe one(ppe_scene(true), true);
+  const RankPpe mine(comm, one, 1.0, false);
+  const RowComparison c = compare_rows(comm, one, mine);
+  if (comm.rank() == 0)
+    MESSAGE(comm.size(), " ranks, halo flags dropped: ", c.pattern_mismatches, " of ", c.rows, " rows with other columns");
+  CHECK(c.pattern_mismatches > 0);
+}

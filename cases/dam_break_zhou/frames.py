@@ -3,9 +3,10 @@
 
     frames.py RUN_DIR OUT.png T [T ...]
 
-T in units of sqrt(H / g) (H = g = 1 in scene.toml): the frame nearest each is drawn, the tank's
-right part (x > 2.5 H) where the surge, the impact and the jet are; pressure over rho g H, clipped
-to [0, 1.5]. The cross is the probe (the right wall, 0.2 H above the floor).
+T in units of sqrt(H / g) (H = g = 1 in scene.toml): the frame nearest each is drawn, four to a
+row; the tank's right part (x > 2.5 H, the whole height) where the surge, the impact and the jet
+are; pressure over rho g H, clipped to [0, 1.5]. The cross is the probe (the right wall, 0.2 H
+above the floor).
 """
 import sys
 import tomllib
@@ -27,8 +28,8 @@ def main():
     run = read_run(sys.argv[1])
     box = tomllib.loads(run.summary["resolved_scene"])["domain"]["max"]
     times = [float(t) for t in sys.argv[3:]]
-    rows = (len(times) + 1) // 2
-    fig, axes = plt.subplots(rows, 2, figsize=(10, 2.6 * rows), squeeze=False, constrained_layout=True)
+    rows = (len(times) + 3) // 4
+    fig, axes = plt.subplots(rows, 4, figsize=(12, 3.3 * rows), squeeze=False, constrained_layout=True)
     for ax in axes.flat[len(times):]:
         ax.axis("off")
     for ax, t in zip(axes.flat, times):
@@ -37,7 +38,7 @@ def main():
         ax.plot([box[0]], [0.2], "x", color="r", ms=6)
         ax.set_aspect("equal")
         ax.set_xlim(2.5, box[0])
-        ax.set_ylim(0, 2.0)
+        ax.set_ylim(0, box[1])
         ax.set_xticks([])
         ax.set_yticks([])
         ax.set_title("t sqrt(g/H) = %.2f" % f["time"], fontsize=8)

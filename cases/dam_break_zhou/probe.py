@@ -13,8 +13,8 @@ with the Wendland C2 kernel (support 2h) and each particle's h from the frame (t
 "h", "mass", "density" and "pressure"). A probe whose support holds no fluid particle reads 0 (it is
 in the air). The frames hold no wall particles, so the support of a point on the wall is half empty
 and the sum is a mean over the fluid side only: along the wall it is exact for a linear field on
-the lattice, across it it reads the pressure 0.88 dx inside the wall (the kernel-weighted centre of
-the particles). The curve is drawn on the wall line (PySPH's probe point); the table also gives the
+the lattice, across it it reads the pressure 0.88 dx inside the wall at h = 2 dx (the
+kernel-weighted centre of the particles). The curve is drawn on the wall line (PySPH's probe point); the table also gives the
 reading half a spacing inside the wall (the line of the first particles' centres at t = 0), which
 reads the pressure 1.07 dx inside. The right wall is the box's max x (summary.json's resolved
 scene), the spacing the first frame's row spacing.
@@ -109,7 +109,8 @@ def measured():
 def window_mean(t, p, a, b):
     """The mean of p over [a, b] by the trapezoidal rule on the samples (linear between them)."""
     grid = np.linspace(a, b, 1001)
-    return float(np.trapz(np.interp(grid, t, p), grid) / (b - a))
+    trapezoid = getattr(np, "trapezoid", None) or np.trapz  # NumPy 2 renamed it
+    return float(trapezoid(np.interp(grid, t, p), grid) / (b - a))
 
 
 def figures(t, p):

@@ -73,6 +73,7 @@ const std::vector<std::string> kScenes = {
     "cases/hydrostatic_tank/scene.toml",   "cases/cavity_re10000/scene.toml",
     "cases/cavity_re1000/defaults.toml",   "cases/basa_cavity/scene.toml",
     "cases/dam_break/scene.toml",          "cases/standing_wave/scene.toml",
+    "cases/dam_break_zhou/scene.toml",
 };
 
 // A scheme that is refused on a case (exit 2: does not apply) or known to fail on it (exit 3), with
@@ -212,6 +213,12 @@ TEST_CASE(CASE_TEST("dam_break")) {
 }
 TEST_CASE(CASE_TEST("standing_wave")) {
   check_case("cases/standing_wave/scene.toml",
+             {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
+              {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
+              {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});
+}
+TEST_CASE(CASE_TEST("dam_break_zhou")) {
+  check_case("cases/dam_break_zhou/scene.toml",
              {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
               {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
               {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});

@@ -2,7 +2,7 @@
 // matrix (HYPRE_IJMatrix, each rank its contiguous block of rows), solved by conjugate gradients
 // (hypre PCG) preconditioned by one BoomerAMG V-cycle (classical AMG, Ruge & Stueben 1987; HMIS
 // coarsening and extended+i interpolation, De Sterck, Yang & Heys 2006, as hypre recommends for 2D
-// and 3D problems on several ranks). The matrix is the one-process "cg_amg"/"klu" matrix, symmetric
+// and 3D problems on several ranks; Chebyshev smoothing, hypre_poisson.cpp). The matrix is the one-process "cg_amg"/"klu" matrix, symmetric
 // positive definite with the pinned unknown.
 //
 // Stopping test: |b - A p|_2 <= tolerance |b|_2 (PCG on the two-norm of the residual, not the
@@ -13,8 +13,8 @@
 // particles move a fraction of a spacing per step, so the BoomerAMG hierarchy set up on one step's
 // matrix serves the next ones. A solve that reuses it hands PCG and the V-cycle the new matrix
 // (hypre_BoomerAMGSolve takes its finest level from the matrix it is given); the coarse levels,
-// interpolation and the smoother's l1 row norms stay those of the set-up matrix: a fixed
-// symmetric preconditioner, so PCG stays valid. The hierarchy is set up anew when a solve needs more
+// interpolation and the Chebyshev smoother's diagonal scaling and eigenvalue bound stay those of
+// the set-up matrix: a fixed symmetric preconditioner, so PCG stays valid. The hierarchy is set up anew when a solve needs more
 // than kGrowth times the iterations of the first solve after the last set-up (and 2 more), after
 // kMaxReuse solves, after invalidate() (the rows were numbered anew: migration, a new deal), or
 // when any rank's row range changed. Iterations are global, so every rank takes the same decision.

@@ -27,10 +27,11 @@ constexpr double kStrongThreshold = 0.25;  // strength of connection for 2D Lapl
 // Smoother: Chebyshev polynomials in D^-1 A (hypre's default order 2, on the upper part of the
 // spectrum; Adams, Brezina, Hu & Tuminaro, J. Comput. Phys. 188, 2003), the same polynomial before
 // and after the coarse correction, so the V-cycle stays symmetric for PCG. It needs only products
-// with the matrix, so its result does not depend on the rank count (Gauss-Seidel's does, through
+// with the matrix, so the preconditioner is the same on any rank count (Gauss-Seidel's is not, through
 // the hybrid coupling across ranks). On the N = 57,600 cavity matrix (bench/bench_hypre_ppe.cpp,
 // quiet machine) it takes the iterations of l1 symmetric Gauss-Seidel (7 and 8 for the two sources,
-// on 1, 2, 3 and 4 ranks) at 0.55-0.75 of its solve time: fewer passes over the fine matrix per cycle.
+// on 1, 2, 3 and 4 ranks) at 0.45-0.76 of its solve time on 2 ranks: fewer passes over the fine
+// matrix per cycle.
 constexpr int kRelaxChebyshev = 16;
 // Reuse of the hierarchy (the header), cg_amg's constants and measured choice.
 constexpr double kGrowth = 1.25;  // set up anew when iterations exceed this x the count after the last set-up

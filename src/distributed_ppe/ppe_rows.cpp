@@ -88,16 +88,7 @@ void assemble_rows(const parallel::Communicator& comm, const FluidFields& f, std
       val[len++] = v;
     });
     col[len] = row_of[a];
-    if (row_of[a] == pinned_row) {
-      val[len++] = 1.0;
-    } else if (fixed_row) {  // P_a = value_a, scaled like the row it replaces (1 for a lone particle)
-      const double scale = diag > 0 ? diag : 1.0;
-      val[len++] = scale;
-      out.b[a] = scale * given.value[a];
-    } else {
-      val[len++] = diag;
-      out.b[a] -= moved;
-    }
+    val[len++] = close_row(row_of[a] == pinned_row, fixed_row, diag, neumann ? 0.0 : given.value[a], moved, out.b[a]);
     const int m = sort_merge_row(col, val, len);
     // Close up: row a moves to `end` (end <= its start).
     const std::size_t from = static_cast<std::size_t>(out.start[a]);

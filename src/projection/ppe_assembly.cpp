@@ -146,16 +146,7 @@ void assemble_ppe(const FluidFields& f, const std::vector<double>& divergence, d
       val[len++] = v;
     });
     col[len] = static_cast<int>(a);
-    if (a == pinned) {
-      val[len++] = 1.0;
-    } else if (fixed_row) {  // P_a = value_a, scaled like the row it replaces (1 for a lone particle)
-      const double scale = diag > 0 ? diag : 1.0;
-      val[len++] = scale;
-      sys.b[a] = scale * given.value[a];
-    } else {
-      val[len++] = diag;
-      sys.b[a] -= moved;
-    }
+    val[len++] = close_row(a == pinned, fixed_row, diag, neumann ? 0.0 : given.value[a], moved, sys.b[a]);
     const int m = sort_merge_row(col, val, len);
     used[a] = m;
   }

@@ -39,6 +39,21 @@ double ppe_row(const FluidFields& f, std::size_t a, double eta2, Column&& column
   return diag;
 }
 
+// The diagonal entry of a row after ppe_row, and its source b: the pinned row reads P = 0 (1, b
+// left as it is); a row of given P (a free surface) reads P_a = value, scaled like the row it
+// replaces (1 for a lone particle); any other row keeps its diagonal and takes the given columns'
+// values it dropped (`moved`, the sum of coefficient x value) into its source.
+inline double close_row(bool pinned, bool given, double diag, double value, double moved, double& b) {
+  if (pinned) return 1.0;
+  if (given) {
+    const double scale = diag > 0 ? diag : 1.0;
+    b = scale * value;
+    return scale;
+  }
+  b -= moved;
+  return diag;
+}
+
 // Sorts the first len entries of a row by column (stable insertion sort: equal columns keep their
 // pair order) and merges equal columns, summing in that order. Returns the merged length.
 template <class Index>

@@ -18,6 +18,7 @@
 
 #include "core/errors.hpp"
 #include "core/expression.hpp"
+#include "core/projection_method.hpp"
 #include "core/scheme.hpp"
 #include "diagnostics/energy_budget.hpp"
 #include "io/input_file.hpp"
@@ -258,11 +259,12 @@ void check_fluid(const Section& f, const Scene& s) {
   if (scheme.grid)  // Szewc et al. 2012 §4.2: the grid's Poisson equation fills the box
     f.fail("region", "a free surface needs the pressure on the particles: isph-gpps solves it on a grid over the "
                      "whole box (Szewc et al. 2012), which has no free surface; use wcsph");
-  // ISPH: the projection assembles p = 0 rows at the surface (projection/ppe_assembly.hpp), but its
-  // velocity correction is not yet stable there (docs/methods/free-surface.md).
-  if (!scheme.weakly_compressible)
-    f.fail("region", "a free surface under method.scheme = \"" + s.scheme + "\": the projection's correction at the "
-                     "surface is not stable yet (docs/methods/free-surface.md); use wcsph");
+  // ISPH: C&R's projection after each step takes the surface (projection/free_surface.hpp); a
+  // pressure inside f(t, y) does not yet (docs/methods/free-surface.md).
+  if (!scheme.weakly_compressible && s.projection != ProjectionMethod::cummins_rudman)
+    f.fail("region", "a free surface under method.projection = \"" + projection_methods().name(s.projection) +
+                         "\": its pressure inside f(t, y) is not stable at the surface yet (docs/methods/free-surface.md); "
+                         "use method.projection = \"cummins_rudman\"");
 }
 
 void read_phases(const Section& root, Scene& s) {

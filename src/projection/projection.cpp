@@ -10,6 +10,7 @@
 #include "core/particles.hpp"
 #include "core/scheme.hpp"
 #include "core/seconds_since.hpp"
+#include "projection/free_surface.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "projection/projection_options.hpp"
 #include "projection/velocity_correction.hpp"
@@ -21,9 +22,11 @@ namespace {
 // up (Re = 100 at t ~ 2.2, Re = 400 at t ~ 2.9, Re = 1000 by t ~ 2), with the difference form it
 // runs (the cavity's walls also need boundary.free_slip_divergence, see its rule). isph: C&R eq. 17,
 // C&R's scheme: the difference form is more accurate on the cavities but the Rayleigh-Taylor case
-// with it blows up at t ~ 0.4.
+// with it blows up at t ~ 0.4. Below a free surface (fluid.region) the difference form, which reads
+// the floor's free-slip images (boundary.free_slip_divergence): C&R eq. 17 leaves the wall out,
+// and the surge of the dam break then lifts off the floor at its tip and sprays ahead.
 std::string automatic_ppe_divergence(const Scene& s) {
-  return scheme_traits(s.scheme).grid ? "difference" : "cummins_rudman";
+  return scheme_traits(s.scheme).grid || !s.fluid_region.empty() ? "difference" : "cummins_rudman";
 }
 
 // method.ppe_pressure_level = "auto". The projection after each step: zero_min. With a zero-mean P
@@ -71,7 +74,7 @@ const std::vector<Param>& projection_params() {
           .to(&Scene::ppe_operator, projection_options().ppe_operator),
       choice("method.ppe_divergence", "auto").choices(projection_options().ppe_divergence.names())
           .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts; "
-               "auto: difference for isph-gpps, cummins_rudman for isph")
+               "auto: difference for isph-gpps and below a free surface (fluid.region), cummins_rudman otherwise")
           .automatic(automatic_ppe_divergence).to(&Scene::ppe_divergence),
       choice("method.ppe_pressure_level", "auto").choices(projection_options().ppe_pressure_level.names())
           .doc("free level of P of the Neumann problem: zero mean, or zero minimum (P >= 0, so C&R eq. 11 never attracts); "
@@ -223,6 +226,19 @@ void Projection::project_velocities(double dt, double t, double* y) {
                                      : exact_operator_ ? neumann_source_exact(f) : neumann_source(f);
     for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
   }
+  // At a free surface the last projection's P gives the Laplacian's defect at cut supports
+  // (free_surface.hpp): L(P) - c . grad P = div/dt, its lagged part in the source. Without a last P
+  // (the first step, or after the solvers forgot theirs: a checkpoint, a re-sort, a migration) one
+  // solve without the defect gives it, so that a restarted run continues bit for bit.
+  if (free_surface_ && !grid_) {
+    if (solution_.size() != n) {
+      poisson_->set_given(surface_rows(f, n, surface_threshold_));
+      const SolveReport rep = poisson_->solve(f, div, dt, solution_);
+      stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
+    }
+    const std::vector<double> defect = linear_laplacian_defect(f, domain_->with_halo(solution_), n);
+    for (std::size_t a = 0; a < n; ++a) div[a] += dt * defect[a];
+  }
   stats_.assembly_seconds += seconds_since(ta);
   if (grid_) {
     project_on_grid(f, div, dt, y);
@@ -234,7 +250,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
-  if (free_surface_) poisson_->set_given(surface_rows(f, n));
+  if (free_surface_) poisson_->set_given(surface_rows(f, n, surface_threshold_));
   const double assembly_before = poisson_->assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (one P = 0) as the next warm start: a start
@@ -257,26 +273,16 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
 
   // 3. Velocity correction, C&R eq. 11, with P at every real point of the fields (on ranks the
   // halo copies' their owners'); ghosts carry their source's P, plus the hydrostatic step under a
-  // body force (FluidFields::point_pressure).
+  // body force (FluidFields::point_pressure). At a free surface the renormalised difference
+  // gradient instead (free_surface.hpp).
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
-  subtract_pressure_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
+  if (free_surface_)
+    subtract_renormalised_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
+  else
+    subtract_pressure_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
 }
 
-// p = 0 at the surface particles; with the modified pressure P = p - rho0 (g . r - min g . r) that
-// is P = -rho0 (g . r - min g . r) there (rhs/pressure_gravity.hpp: the reported p is then 0).
-DirichletRows Projection::surface_rows(const FluidFields& f, std::size_t n) const {
-  DirichletRows given;
-  given.fixed = free_surface_particles(f, surface_threshold_);
-  given.fixed.resize(n);
-  given.value.assign(n, 0.0);
-  if (gravity_.active) {
-    const std::vector<double> h = gravity_.head(n, f.x.data(), f.dim == 2 ? f.y.data() : nullptr);
-    const double lowest = domain_->level(h, true);
-    for (std::size_t a = 0; a < n; ++a) given.value[a] = -gravity_.rho0 * (h[a] - lowest);
-  }
-  return given;
-}
 
 void Projection::project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout L = domain_->layout();

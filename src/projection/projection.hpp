@@ -101,7 +101,6 @@ class Projection {
   void project_on_grid(const FluidFields& f, const std::vector<double>& div, double dt, double* y);
   // reported_ = P + rho0 (g . r - min g . r) at the fields' positions (gravity in the pressure).
   void report(const std::vector<double>& p);
-  DirichletRows surface_rows(const FluidFields& f, std::size_t n) const;
 
   std::unique_ptr<ParticleDomain> domain_;
   BodyForceSplit split_;           // the body force's wall flux as Neumann data (body_force_split.hpp)
@@ -111,9 +110,10 @@ class Projection {
   bool exact_operator_;
   bool difference_divergence_;
   bool zero_min_level_;
-  // fluid.region: p = 0 on the surface particles, found anew at each solve (ppe_assembly.hpp); the
+  // fluid.region: p = 0 on the surface particles, found anew at each solve (free_surface.hpp); the
   // pressure's level is then fixed by them. The threshold of div r: Lind et al. 2012's 1.5 in 2D,
-  // three quarters of the bulk value d.
+  // three quarters of the bulk value d. The velocity correction and the Laplacian's defect there:
+  // free_surface.hpp.
   bool free_surface_;
   double surface_threshold_;
   double pressure_offset_;

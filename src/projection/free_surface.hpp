@@ -1,7 +1,8 @@
 // What C&R's projection (projection.hpp) does differently at a free surface (fluid.region):
 //
-//   - rows of given pressure: p = 0 at the surface particles, found by the divergence of position
-//     (Shao & Lo 2003; Lind et al. 2012 §2.3, threshold 0.75 d): surface_rows;
+//   - rows of given pressure at the surface particles, found by the divergence of position (Shao &
+//     Lo 2003; Lind et al. 2012 §2.3, threshold 0.75 d), p = 0 half a spacing beyond them:
+//     surface_rows;
 //   - the velocity correction by the renormalised difference gradient, exact for a linear P at a
 //     cut support (velocity_correction.hpp: subtract_renormalised_gradient);
 //   - the Laplacian made exact for a linear P at a cut support: linear_laplacian_defect, lagged by
@@ -19,8 +20,15 @@
 
 namespace arksph {
 
-// p = 0 at the surface particles (div r below `threshold`), n real particles.
-DirichletRows surface_rows(const FluidFields& f, std::size_t n, double threshold);
+// The rows of given pressure at the surface particles (div r below `threshold`). The surface itself
+// lies `depth` beyond them (half a spacing: where the lattice's next row would sit), where p = 0;
+// each surface particle takes p = depth dp/dn, the inward derivative of the last projection's P
+// (p_last, a value per real point; its renormalised gradient along the inward normal
+// sum_b V_b grad_a W_ab / |...|), not below 0. Without p_last, or where its gradient is
+// near-singular, p = 0 at the particle. A column at rest then reads p = rho g (H - y) to the
+// surface's height H, not to its top particles' (rho g dx / 2 less).
+DirichletRows surface_rows(const FluidFields& f, std::size_t n, double threshold, double depth,
+                           const std::vector<double>& p_last);
 
 // C&R eq. 19 applied to a linear P = P_0 + r . G reads, with p_a - p_b = r_ab . G,
 //   L(P)_a = c_a . G,   c_a = sum_b V_b 4/(rho_a + rho_b) F_ab r_ab^2/(r_ab^2 + eta^2) r_ab

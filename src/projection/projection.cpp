@@ -111,6 +111,7 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
       zero_min_level_(projection_options().ppe_pressure_level.at(scene.ppe_pressure_level) == PressureLevel::zero_min),
       free_surface_(!scene.fluid_region.empty()),
       surface_threshold_(free_surface_threshold(scene.dimension)),
+      surface_depth_(0.5 * scene.spacing),
       pressure_offset_(scene.ppe_pressure_offset),
       gravity_(pressure_gravity(scene)) {
   if (scheme_traits(scene.scheme).grid)
@@ -227,16 +228,18 @@ void Projection::project_velocities(double dt, double t, double* y) {
     for (std::size_t a = 0; a < n; ++a) div[a] += dt * (dg[a] + flux[a]);
   }
   // At a free surface the last projection's P gives the Laplacian's defect at cut supports
-  // (free_surface.hpp): L(P) - c . grad P = div/dt, its lagged part in the source. Without a last P
+  // (free_surface.hpp): L(P) - c . grad P = div/dt, its lagged part in the source; and the surface
+  // particles' given P (p = 0 half a spacing beyond them). Without a last P
   // (the first step, or after the solvers forgot theirs: a checkpoint, a re-sort, a migration) one
   // solve without the defect gives it, so that a restarted run continues bit for bit.
   if (free_surface_ && !grid_) {
     if (solution_.size() != n) {
-      poisson_->set_given(surface_rows(f, n, surface_threshold_));
+      poisson_->set_given(surface_rows(f, n, surface_threshold_, surface_depth_, {}));
       const SolveReport rep = poisson_->solve(f, div, dt, solution_);
       stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
     }
-    const std::vector<double> defect = linear_laplacian_defect(f, domain_->with_halo(solution_), n);
+    last_pressure_ = domain_->with_halo(solution_);
+    const std::vector<double> defect = linear_laplacian_defect(f, last_pressure_, n);
     for (std::size_t a = 0; a < n; ++a) div[a] += dt * defect[a];
   }
   stats_.assembly_seconds += seconds_since(ta);
@@ -250,7 +253,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
-  if (free_surface_) poisson_->set_given(surface_rows(f, n, surface_threshold_));
+  if (free_surface_) poisson_->set_given(surface_rows(f, n, surface_threshold_, surface_depth_, last_pressure_));
   const double assembly_before = poisson_->assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (one P = 0) as the next warm start: a start

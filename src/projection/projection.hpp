@@ -116,6 +116,8 @@ class Projection {
   // free_surface.hpp.
   bool free_surface_;
   double surface_threshold_;
+  double surface_depth_;                 // the surface's distance beyond its particles: half a spacing
+  std::vector<double> last_pressure_;   // the last projection's P at every real point (free surface)
   double pressure_offset_;
   double t_prev_ = 0;
   std::vector<double> y_prev_;

@@ -33,38 +33,46 @@ inline void subtract_pressure_gradient(const FluidFields& f, const std::vector<d
   }
 }
 
-// The velocity correction at a free surface (fluid.region), with the renormalised difference
-// gradient (Randles & Libersky 1996; Bonet & Lok 1999):
+// The renormalised difference gradient (Randles & Libersky 1996; Bonet & Lok 1999) of P at a,
 //   grad P_a = B_a sum_b V_b (P_b - P_a) grad_a W_ab,   B_a = (-sum_b V_b r_ab (x) grad_a W_ab)^-1,
-//   u_a <- u_a - dt grad P_a / rho_a,
-// over real neighbours and ghosts (P as in subtract_pressure_gradient). It is exact for a linear P
-// at any support, also one the surface cuts, where eq. 11's symmetric sum turns
-// P_a sum_b m_b grad W_ab into a force. Where B_a's matrix is near-singular (det below
-// kSingularMoment; 1 in the bulk, 1/4 at a flat surface, 1/16 at a right-angled corner of the
-// fluid) a particle with a few neighbours on one side: the plain difference form without B_a.
+// over real neighbours and ghosts (P as in subtract_pressure_gradient: a value per real point,
+// ghosts their source's plus the hydrostatic step). It is exact for a linear P at any support, also
+// one a free surface cuts. Where B_a's matrix is near-singular (det below kSingularMoment; 1 in the
+// bulk, 1/4 at a flat surface, 1/16 at a right-angled corner of the fluid: a particle with a few
+// neighbours on one side) the plain difference form without B_a, and regular = false.
+struct RenormalisedGradient {
+  double x = 0, y = 0;
+  bool regular = false;
+};
+inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a) {
+  constexpr double kSingularMoment = 0.02;
+  double gx = 0, gy = 0, mxx = 0, mxy = 0, myy = 0;
+  f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
+    const double vb = f.m[b] / f.rho[b];
+    const double dp = f.point_pressure(p, b) - p[a];
+    gx += vb * dp * F * rx;
+    gy += vb * dp * F * ry;
+    mxx -= vb * F * rx * rx;
+    mxy -= vb * F * rx * ry;
+    myy -= vb * F * ry * ry;
+  });
+  const bool two_d = f.dim == 2;
+  const double det = two_d ? mxx * myy - mxy * mxy : mxx;
+  if (!(det > kSingularMoment)) return {gx, two_d ? gy : 0.0, false};
+  if (!two_d) return {gx / mxx, 0.0, true};
+  return {(myy * gx - mxy * gy) / det, (mxx * gy - mxy * gx) / det, true};
+}
+
+// The velocity correction at a free surface (fluid.region): u_a <- u_a - dt grad P_a / rho_a with
+// the renormalised gradient above, where C&R eq. 11's symmetric sum turns P_a sum_b m_b grad W_ab,
+// non-zero at a cut support, into a force.
 inline void subtract_renormalised_gradient(const FluidFields& f, const std::vector<double>& p, double dt,
                                            std::size_t n, double* u, double* v) {
-  constexpr double kSingularMoment = 0.02;
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    double gx = 0, gy = 0, mxx = 0, mxy = 0, myy = 0;
-    f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
-      const double vb = f.m[b] / f.rho[b];
-      const double dp = f.point_pressure(p, b) - p[a];
-      gx += vb * dp * F * rx;
-      gy += vb * dp * F * ry;
-      mxx -= vb * F * rx * rx;
-      mxy -= vb * F * rx * ry;
-      myy -= vb * F * ry * ry;
-    });
-    const double det = v ? mxx * myy - mxy * mxy : mxx;
-    double dx = gx, dy = gy;
-    if (det > kSingularMoment) {
-      dx = v ? (myy * gx - mxy * gy) / det : gx / mxx;
-      dy = v ? (mxx * gy - mxy * gx) / det : 0.0;
-    }
-    u[a] -= dt * dx / f.rho[a];
-    if (v) v[a] -= dt * dy / f.rho[a];
+    const RenormalisedGradient g = renormalised_gradient(f, p, a);
+    u[a] -= dt * g.x / f.rho[a];
+    if (v) v[a] -= dt * g.y / f.rho[a];
   }
 }
 

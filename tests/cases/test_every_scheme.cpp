@@ -205,22 +205,20 @@ TEST_CASE(CASE_TEST("isph_order taylor_green_re100")) {
   check_case("cases/isph_order/taylor_green_re100.toml",
              {{"isph-gpps", "method.projection: \"constrained\" needs the particle Poisson equation"}});
 }
-// A free surface: wcsph only (docs/methods/free-surface.md says why the projection schemes refuse it).
+// A free surface: wcsph, and isph with C&R's projection (docs/methods/free-surface.md says why the grid
+// and the pressure inside f refuse it).
 TEST_CASE(CASE_TEST("dam_break")) {
-  check_case("cases/dam_break/scene.toml", {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
-                                            {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
-                                            {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});
+  check_case("cases/dam_break/scene.toml", {{"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
+                                            {"isph constrained", "fluid.region: a free surface under method.projection = \"constrained\""}});
 }
 TEST_CASE(CASE_TEST("standing_wave")) {
   check_case("cases/standing_wave/scene.toml",
-             {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
-              {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
-              {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});
+             {{"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
+              {"isph constrained", "fluid.region: a free surface under method.projection = \"constrained\""}});
 }
 TEST_CASE(CASE_TEST("dam_break_zhou")) {
   check_case("cases/dam_break_zhou/scene.toml",
-             {{"isph", "fluid.region: a free surface under method.scheme = \"isph\""},
-              {"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
-              {"isph constrained", "fluid.region: a free surface under method.scheme = \"isph\""}});
+             {{"isph-gpps", "fluid.region: a free surface needs the pressure on the particles"},
+              {"isph constrained", "fluid.region: a free surface under method.projection = \"constrained\""}});
 }
 TEST_CASE(CASE_TEST("sweeps taylor_green_small")) { check_case("cases/sweeps/taylor_green_small.toml"); }

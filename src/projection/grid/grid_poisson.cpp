@@ -69,6 +69,11 @@ bool GridPoisson::set_density(const std::vector<double>& rho) {
   return true;
 }
 
+bool GridPoisson::set_density(double rho) {
+  if (uniform_ && rho == rho_.front()) return false;
+  return set_density(std::vector<double>(grid_.cells(), rho));
+}
+
 void GridPoisson::factorise() {
   const std::size_t n = grid_.cells();
   std::vector<Eigen::Triplet<double, int>> trip;
@@ -139,12 +144,13 @@ std::vector<double> GridPoisson::apply(const std::vector<double>& p) const {
   return out;
 }
 
-void GridPoisson::acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay) const {
+void GridPoisson::acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay,
+                               const std::array<int, 4>& box) const {
   const std::size_t n = grid_.cells();
   ax.assign(n, 0.0);
   ay.assign(n, 0.0);
-  for (int j = 0; j < grid_.ny; ++j)
-    for (int i = 0; i < grid_.nx; ++i) {
+  for (int j = std::max(box[2], 0); j <= std::min(box[3], grid_.ny - 1); ++j)
+    for (int i = std::max(box[0], 0); i <= std::min(box[1], grid_.nx - 1); ++i) {
       const auto a = static_cast<long>(grid_.index(i, j));
       for (int axis = 0; axis < (grid_.ny > 1 ? 2 : 1); ++axis) {
         const long lo = neighbour(i, j, 2 * axis), hi = neighbour(i, j, 2 * axis + 1);

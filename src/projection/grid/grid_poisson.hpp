@@ -45,6 +45,8 @@ class GridPoisson {
   // Cell densities (size cells()). Sets the solver up again (a KLU factorisation, or the transforms
   // for a uniform density) when they differ (bit for bit) from the current ones; returns true if it did.
   bool set_density(const std::vector<double>& rho);
+  // The same density in every cell, without comparing a field.
+  bool set_density(double rho);
   // Solves for p (size cells(), zero mean). The source is shifted to zero mean first (solvability).
   // Returns the relative residual: of the pinned system (KLU), of the equation with the zero-mean
   // source (transforms).
@@ -52,7 +54,12 @@ class GridPoisson {
   // (1/rho) grad p at the cell centres: the mean of the face fluxes c_f (p_nb - p_i)/h on the two
   // sides of each axis; at a wall only the interior face counts (the wall flux is the Neumann
   // condition of the solve, not a property of p near the wall).
-  void acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay) const;
+  void acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay) const {
+    acceleration(p, ax, ay, {0, grid_.nx - 1, 0, grid_.ny - 1});
+  }
+  // The same in the cells i0 <= i <= i1, j0 <= j <= j1 of box = {i0, i1, j0, j1} only (0 elsewhere).
+  void acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay,
+                    const std::array<int, 4>& box) const;
   // The discrete operator applied to p (for tests): (L p)_i.
   std::vector<double> apply(const std::vector<double>& p) const;
   // Set-ups: KLU factorisations and switches to the transforms.

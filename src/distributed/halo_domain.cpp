@@ -50,8 +50,8 @@ std::pair<std::vector<double>, std::vector<double>> HaloDomain::with_halo(const 
 
 CellCombine HaloDomain::cell_combine() const {
   return [this](std::vector<double>& sums, std::vector<double>& maxima) {
-    comm_.sum_in_place(sums);
-    comm_.max_in_place(maxima);
+    if (!sums.empty()) comm_.sum_in_place(sums);  // every rank passes the same sizes
+    if (!maxima.empty()) comm_.max_in_place(maxima);
   };
 }
 

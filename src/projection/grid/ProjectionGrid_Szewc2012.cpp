@@ -2,6 +2,7 @@
 
 #include "core/param_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -75,45 +76,66 @@ void GridProjection::add_wall_flux(std::vector<double>& rhs, double t) const {
     }
 }
 
-namespace {
-// The two deposits' sums combined over the processes: one array of sums and one of maxima (the lows
-// negated), so that the combination is two reductions.
-void combine_deposits(const CellCombine& combine, DepositSums& a, DepositSums& b) {
-  const std::size_t nc = a.value.size();
-  std::vector<double> sums, maxima;
-  sums.reserve(4 * nc);
-  maxima.reserve(4 * nc);
-  for (DepositSums* d : {&a, &b}) {
-    sums.insert(sums.end(), d->value.begin(), d->value.end());
-    sums.insert(sums.end(), d->weight.begin(), d->weight.end());
-    for (double lo : d->lo) maxima.push_back(-lo);
-    maxima.insert(maxima.end(), d->hi.begin(), d->hi.end());
-  }
-  combine(sums, maxima);
-  std::size_t k = 0;
-  for (DepositSums* d : {&a, &b}) {
-    for (std::size_t i = 0; i < nc; ++i) d->value[i] = sums[k * nc + i];
-    for (std::size_t i = 0; i < nc; ++i) d->weight[i] = sums[(k + 1) * nc + i];
-    for (std::size_t i = 0; i < nc; ++i) d->lo[i] = -maxima[k * nc + i];
-    for (std::size_t i = 0; i < nc; ++i) d->hi[i] = maxima[(k + 1) * nc + i];
-    k += 2;
-  }
-}
-}  // namespace
-
 GridCorrection GridProjection::solve(const FluidFields& f, std::size_t n, const std::vector<double>& divergence,
                                      double dt, const CellCombine& combine) {
   const GridSpec& g = poisson_.grid();
+  const std::size_t nc = g.cells();
   const double* y = f.dim == 2 ? f.y.data() : nullptr;
   std::vector<double> volume(n), source(n);
+  double rho_lo = HUGE_VAL, rho_hi = -HUGE_VAL;
   for (std::size_t a = 0; a < n; ++a) {
     volume[a] = f.m[a] / f.rho[a];
     source[a] = divergence[a] / dt;
+    rho_lo = std::min(rho_lo, f.rho0[a]);
+    rho_hi = std::max(rho_hi, f.rho0[a]);
   }
-  DepositSums rho_sums = deposit_sums(g, n, f.x.data(), y, volume.data(), f.rho0.data());
-  DepositSums src_sums = deposit_sums(g, n, f.x.data(), y, volume.data(), source.data());
-  if (combine) combine_deposits(combine, rho_sums, src_sums);
-  const GridDeposit rho = finish_deposit(std::move(rho_sums), fallback_density_);
+  if (combine) {
+    std::vector<double> none, extremes{-rho_lo, rho_hi};
+    combine(none, extremes);
+    rho_lo = -extremes[0];
+    rho_hi = extremes[1];
+  }
+  // One phase (every particle's rho0 the fallback density): the deposit of rho0 is the fallback in
+  // every cell, bit for bit (the contributing particles all carry it, the empty cells take it), and
+  // is not made. The source deposit and its weights are the only arrays combined over the ranks.
+  const bool one_density = rho_lo == fallback_density_ && rho_hi == fallback_density_;
+  DepositSums src_sums = deposit_sums(g, n, f.x.data(), y, volume.data(), source.data(), false);
+  GridCorrection c;
+  if (one_density) {
+    if (combine) {
+      std::vector<double> sums(2 * nc), none;
+      std::copy(src_sums.value.begin(), src_sums.value.end(), sums.begin());
+      std::copy(src_sums.weight.begin(), src_sums.weight.end(), sums.begin() + static_cast<long>(nc));
+      combine(sums, none);
+      std::copy(sums.begin(), sums.begin() + static_cast<long>(nc), src_sums.value.begin());
+      std::copy(sums.begin() + static_cast<long>(nc), sums.end(), src_sums.weight.begin());
+    }
+    c.refactorised = poisson_.set_density(fallback_density_);
+  } else {
+    // Several densities: the rho0 deposit with its extremes (a cell whose particles all carry one
+    // rho0 gets it exactly). Its weights are the source deposit's (the same particles, volumes and
+    // cell weights), so they are combined once.
+    DepositSums rho_sums = deposit_sums(g, n, f.x.data(), y, volume.data(), f.rho0.data(), true);
+    if (combine) {
+      std::vector<double> sums, maxima;
+      sums.reserve(3 * nc);
+      maxima.reserve(2 * nc);
+      sums.insert(sums.end(), rho_sums.value.begin(), rho_sums.value.end());
+      sums.insert(sums.end(), src_sums.value.begin(), src_sums.value.end());
+      sums.insert(sums.end(), src_sums.weight.begin(), src_sums.weight.end());
+      for (double lo : rho_sums.lo) maxima.push_back(-lo);
+      maxima.insert(maxima.end(), rho_sums.hi.begin(), rho_sums.hi.end());
+      combine(sums, maxima);
+      for (std::size_t i = 0; i < nc; ++i) {
+        rho_sums.value[i] = sums[i];
+        src_sums.value[i] = sums[nc + i];
+        src_sums.weight[i] = rho_sums.weight[i] = sums[2 * nc + i];
+        rho_sums.lo[i] = -maxima[i];
+        rho_sums.hi[i] = maxima[nc + i];
+      }
+    }
+    c.refactorised = poisson_.set_density(finish_deposit(std::move(rho_sums), fallback_density_).value);
+  }
   const GridDeposit src = finish_deposit(std::move(src_sums), 0.0);
   std::vector<double> rhs = src.value;
   if (volume_relaxation_ > 0) {  // ask for div u = beta (phi - 1)/dt: over-full cells expand
@@ -122,15 +144,16 @@ GridCorrection GridProjection::solve(const FluidFields& f, std::size_t n, const 
       rhs[i] -= volume_relaxation_ * (src.weight[i] / cell - 1.0) / (dt * dt);
   }
   if (wall_flux_) add_wall_flux(rhs, f.t);
-  GridCorrection c;
-  c.refactorised = poisson_.set_density(rho.value);
   std::vector<double> p;
   c.residual = poisson_.solve(rhs, p);
+  // (1/rho) grad p only in the cells that this process's particles interpolate from.
   std::vector<double> ax, ay;
-  poisson_.acceleration(p, ax, ay);
-  c.ax = interpolate(g, n, f.x.data(), y, ax);
-  if (f.dim == 2) c.ay = interpolate(g, n, f.x.data(), y, ay);
-  c.pressure = interpolate(g, n, f.x.data(), y, p);
+  poisson_.acceleration(p, ax, ay, cell_box(g, n, f.x.data(), y));
+  std::vector<std::vector<double>> at = f.dim == 2 ? interpolate_fields(g, n, f.x.data(), y, {&ax, &ay, &p})
+                                                   : interpolate_fields(g, n, f.x.data(), y, {&ax, &p});
+  c.ax = std::move(at.front());
+  if (f.dim == 2) c.ay = std::move(at[1]);
+  c.pressure = std::move(at.back());
   return c;
 }
 

@@ -1,9 +1,10 @@
 // The grid-projected Poisson solver (GPPS) of Szewc et al. 2012 §4.2: the source of the pressure
 // Poisson equation (eq. 32), div(u*)/dt computed on the particles, is projected onto a regular
 // cell-centred auxiliary grid (grid_transfer.hpp), the equation div((1/rho) grad p) = div(u*)/dt is
-// solved there (grid_poisson.hpp: five-point flux form, Neumann walls, factorised once by KLU and
-// refactorised only when the density on the grid changes), and the acceleration (1/rho) grad p is
-// interpolated back to the particles, where the velocity correction of eq. 30 uses it.
+// solved there (grid_poisson.hpp: five-point flux form, Neumann walls or periodic sides; fast
+// transforms for a uniform density, otherwise KLU factorised once and refactorised only when the
+// density on the grid changes), and the acceleration (1/rho) grad p is interpolated back to the
+// particles, where the velocity correction of eq. 30 uses it.
 // Optional volume relaxation (method.gpps_volume_relaxation = beta > 0; not in Szewc): the grid source
 // becomes div(u*)/dt - beta (phi_i - 1)/dt^2 with phi_i = sum_a w_ia V_a / h^d the particle volume
 // deposited in cell i, so that over-full cells expand and empty ones fill (the particle
@@ -15,7 +16,9 @@
 // phase it is uniform and the matrix never changes.
 // On the ranks of a decomposed run each rank deposits its own particles; the cell sums of all ranks
 // are combined (CellCombine) before the division, so that every rank holds the deposit of the whole
-// flow, solves the same grid problem and interpolates it at its own particles.
+// flow, solves the same grid problem and interpolates it at its own particles. For one phase (every
+// particle's rho0 the scene's density) the density deposit is not made and two arrays of cells are
+// combined (the source sums and weights); with several phases three sums and two extremes.
 #pragma once
 #include "core/parameter.hpp"
 #include <functional>

@@ -2,6 +2,7 @@
 
 #include <klu.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include <Eigen/SparseCore>
 
 #include "core/errors.hpp"
+#include "projection/grid/grid_poisson_transform.hpp"
 
 namespace arksph {
 
@@ -24,7 +26,7 @@ struct GridPoisson::Klu {
   }
 };
 
-GridPoisson::GridPoisson(const GridSpec& grid) : grid_(grid) {
+GridPoisson::GridPoisson(const GridSpec& grid, Solver solver) : grid_(grid), solver_(solver) {
   if (grid_.nx < 2 || grid_.ny < 1 || !(grid_.h > 0)) throw std::invalid_argument("GridPoisson: bad grid");
 }
 
@@ -51,10 +53,25 @@ long GridPoisson::neighbour(int i, int j, int k) const {
 
 bool GridPoisson::set_density(const std::vector<double>& rho) {
   if (rho.size() != grid_.cells()) throw std::invalid_argument("GridPoisson: density size");
-  if (klu_ && rho == rho_) return false;
+  if ((klu_ || uniform_) && rho == rho_) return false;
   rho_ = rho;
-  factorise();
+  const bool uniform = solver_ == Solver::automatic &&
+                       std::all_of(rho.begin(), rho.end(), [&](double r) { return r == rho.front(); });
+  if (uniform) {
+    if (!transform_) transform_ = std::make_unique<GridPoissonTransform>(grid_);
+    klu_.reset();
+    uniform_ = true;
+    ++factorisations_;
+  } else {
+    uniform_ = false;
+    factorise();
+  }
   return true;
+}
+
+bool GridPoisson::set_density(double rho) {
+  if (uniform_ && rho == rho_.front()) return false;
+  return set_density(std::vector<double>(grid_.cells(), rho));
 }
 
 void GridPoisson::factorise() {
@@ -91,6 +108,7 @@ void GridPoisson::factorise() {
 }
 
 double GridPoisson::solve(const std::vector<double>& source, std::vector<double>& p) {
+  if (uniform_) return transform_->solve(source, rho_.front(), p);
   if (!klu_) throw std::logic_error("GridPoisson::solve before set_density");
   const std::size_t n = grid_.cells();
   const double mean = std::accumulate(source.begin(), source.end(), 0.0) / static_cast<double>(n);
@@ -126,12 +144,13 @@ std::vector<double> GridPoisson::apply(const std::vector<double>& p) const {
   return out;
 }
 
-void GridPoisson::acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay) const {
+void GridPoisson::acceleration(const std::vector<double>& p, std::vector<double>& ax, std::vector<double>& ay,
+                               const std::array<int, 4>& box) const {
   const std::size_t n = grid_.cells();
   ax.assign(n, 0.0);
   ay.assign(n, 0.0);
-  for (int j = 0; j < grid_.ny; ++j)
-    for (int i = 0; i < grid_.nx; ++i) {
+  for (int j = std::max(box[2], 0); j <= std::min(box[3], grid_.ny - 1); ++j)
+    for (int i = std::max(box[0], 0); i <= std::min(box[1], grid_.nx - 1); ++i) {
       const auto a = static_cast<long>(grid_.index(i, j));
       for (int axis = 0; axis < (grid_.ny > 1 ? 2 : 1); ++axis) {
         const long lo = neighbour(i, j, 2 * axis), hi = neighbour(i, j, 2 * axis + 1);

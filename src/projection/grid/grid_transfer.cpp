@@ -46,12 +46,45 @@ CellWeights cell_weights(const GridSpec& g, double x, double y) {
   return c;
 }
 
+std::array<int, 4> cell_box(const GridSpec& g, std::size_t n, const double* x, const double* y) {
+  std::array<int, 4> box{g.nx, -1, g.ny, -1};
+  bool wraps[2] = {false, false};
+  for (std::size_t a = 0; a < n; ++a) {
+    int i0, i1, j0, j1;
+    double w;
+    axis_weights(x[a], g.x0, g.h, g.nx, g.periodic[0], i0, i1, w);
+    axis_weights(y ? y[a] : 0.0, g.y0, g.h, g.ny, g.periodic[1], j0, j1, w);
+    wraps[0] = wraps[0] || i1 < i0;
+    wraps[1] = wraps[1] || j1 < j0;
+    box[0] = std::min(box[0], std::min(i0, i1));
+    box[1] = std::max(box[1], std::max(i0, i1));
+    box[2] = std::min(box[2], std::min(j0, j1));
+    box[3] = std::max(box[3], std::max(j0, j1));
+  }
+  if (n == 0) return {0, -1, 0, -1};
+  if (wraps[0]) box[0] = 0, box[1] = g.nx - 1;
+  if (wraps[1]) box[2] = 0, box[3] = g.ny - 1;
+  return box;
+}
+
 DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
-                         const double* q) {
+                         const double* q, bool extremes) {
   const std::size_t nc = g.cells();
   DepositSums d;
   d.value.assign(nc, 0.0);
   d.weight.assign(nc, 0.0);
+  if (!extremes) {
+    for (std::size_t a = 0; a < n; ++a) {
+      const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
+      for (int k = 0; k < 4; ++k) {
+        if (c.w[k] == 0) continue;
+        const double wv = c.w[k] * volume[a];
+        d.value[c.cell[k]] += wv * q[a];
+        d.weight[c.cell[k]] += wv;
+      }
+    }
+    return d;
+  }
   d.lo.assign(nc, HUGE_VAL);
   d.hi.assign(nc, -HUGE_VAL);
   for (std::size_t a = 0; a < n; ++a) {
@@ -72,10 +105,11 @@ GridDeposit finish_deposit(DepositSums&& s, double fallback) {
   GridDeposit d;
   d.value = std::move(s.value);
   d.weight = std::move(s.weight);
+  const bool extremes = !s.lo.empty();
   for (std::size_t i = 0; i < d.value.size(); ++i) {
     if (d.weight[i] <= 0)
       d.value[i] = fallback;
-    else if (s.lo[i] == s.hi[i])
+    else if (extremes && s.lo[i] == s.hi[i])
       d.value[i] = s.lo[i];
     else
       d.value[i] /= d.weight[i];
@@ -94,6 +128,19 @@ std::vector<double> interpolate(const GridSpec& g, std::size_t n, const double* 
   for (std::size_t a = 0; a < n; ++a) {
     const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
     out[a] = c.w[0] * field[c.cell[0]] + c.w[1] * field[c.cell[1]] + c.w[2] * field[c.cell[2]] + c.w[3] * field[c.cell[3]];
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> interpolate_fields(const GridSpec& g, std::size_t n, const double* x, const double* y,
+                                                    const std::vector<const std::vector<double>*>& fields) {
+  std::vector<std::vector<double>> out(fields.size(), std::vector<double>(n));
+  for (std::size_t a = 0; a < n; ++a) {
+    const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      const std::vector<double>& field = *fields[k];
+      out[k][a] = c.w[0] * field[c.cell[0]] + c.w[1] * field[c.cell[1]] + c.w[2] * field[c.cell[2]] + c.w[3] * field[c.cell[3]];
+    }
   }
   return out;
 }

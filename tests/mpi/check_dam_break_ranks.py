@@ -36,10 +36,39 @@ ROUND_OFF = 1e-12
 os.makedirs(work, exist_ok=True)
 args = [os.path.join(source, "cases", "dam_break", "scene.toml"), "--set", "fluid.spacing=0.05",
         "--set", "time.end=0.06", "--set", "output.every=0.02"]
-runs = {}
-for ranks in (1, 2, 3):
-    out = run_checks.fresh(arksph, mpiexec, flags, work, "dam-%d" % ranks, ranks, args)
-    runs[ranks] = read_run(out) if out else None
+
+
+def run_all(label, extra_one, extra_ranks):
+    """The dam break on 1, 2 and 3 ranks (label in the folder names), each read back (None if it failed)."""
+    runs = {}
+    for ranks in (1, 2, 3):
+        extra = extra_one if ranks == 1 else extra_ranks
+        out = run_checks.fresh(arksph, mpiexec, flags, work, "%s-%d" % (label, ranks), ranks, args + extra)
+        runs[ranks] = read_run(out) if out else None
+    return runs
+
+
+def compare(name, one, other, ranks, fields, bound):
+    """Every frame of `other` against one process's by particle id: the same ids and surface
+    particles, and each field within `bound` of one process's (relative to the frame's largest)."""
+    check(np.array_equal(one.times, other.times), "%s %d ranks: the frame times of one process" % (name, ranks))
+    worst = 0.0
+    for i in range(min(len(one), len(other))):
+        a, b = one.frame(i), other.frame(i)
+        if not np.array_equal(a["id"], b["id"]):
+            check(False, "%s %d ranks frame %d: the particle ids of one process" % (name, ranks, i))
+            continue
+        for field in fields:
+            scale = max(np.abs(a[field]).max(), 1e-300)
+            worst = max(worst, np.abs(a[field] - b[field]).max() / scale)
+        check(np.array_equal(a["free_surface"], b["free_surface"]),
+              "%s %d ranks frame %d: free_surface equals one process's (%d surface particles)"
+              % (name, ranks, i, int(a["free_surface"].sum())))
+    check(worst <= bound, "%s %d ranks: %s within %.0e of one process's (largest relative difference %.2e)"
+          % (name, ranks, ", ".join(fields), bound, worst))
+
+
+runs = run_all("dam", [], [])
 one = runs[1]
 check(one is not None, "one process runs the dam break")
 if one:
@@ -52,49 +81,16 @@ for ranks in (2, 3):
         continue
     s = json.loads((other.path / "summary.json").read_text())["steps"]
     check(s == steps, "%d ranks: %d steps, one process %d" % (ranks, s, steps))
-    check(np.array_equal(one.times, other.times), "%d ranks: the frame times of one process" % ranks)
-    worst = 0.0
-    for i in range(min(len(one), len(other))):
-        a, b = one.frame(i), other.frame(i)
-        if not np.array_equal(a["id"], b["id"]):
-            check(False, "%d ranks frame %d: the particle ids of one process" % (ranks, i))
-            continue
-        for field in ("Points", "velocity", "density"):
-            scale = max(np.abs(a[field]).max(), 1e-300)
-            worst = max(worst, np.abs(a[field] - b[field]).max() / scale)
-        check(np.array_equal(a["free_surface"], b["free_surface"]),
-              "%d ranks frame %d: free_surface equals one process's (%d surface particles)"
-              % (ranks, i, int(a["free_surface"].sum())))
-    check(worst <= ROUND_OFF, "%d ranks: positions, velocities, densities within %.0e of one process's "
-          "over the %d steps (largest relative difference %.2e)" % (ranks, ROUND_OFF, steps, worst))
+    compare("wcsph", one, other, ranks, ("Points", "velocity", "density"), ROUND_OFF)
 
 # isph: measured 4.7e-12 (2 ranks) and 9.3e-13 (3 ranks) to t = 0.06.
 POISSON = 1e-8
-isph = {}
-for ranks in (1, 2, 3):
-    extra = ["--set", "method.scheme=isph", "--set", "method.ppe_tolerance=1e-10"]
-    if ranks == 1:
-        extra += ["--set", "method.ppe_solver=klu"]
-    out = run_checks.fresh(arksph, mpiexec, flags, work, "dam-isph-%d" % ranks, ranks, args + extra)
-    isph[ranks] = read_run(out) if out else None
+isph_sets = ["--set", "method.scheme=isph", "--set", "method.ppe_tolerance=1e-10"]
+isph = run_all("dam-isph", isph_sets + ["--set", "method.ppe_solver=klu"], isph_sets)
 check(isph[1] is not None, "one process runs the dam break under isph")
 for ranks in (2, 3):
-    a_run, b_run = isph[1], isph[ranks]
-    if not (a_run and b_run):
+    if not (isph[1] and isph[ranks]):
         check(False, "%d ranks run the dam break under isph" % ranks)
         continue
-    check(np.array_equal(a_run.times, b_run.times), "isph %d ranks: the frame times of one process" % ranks)
-    worst = 0.0
-    for i in range(min(len(a_run), len(b_run))):
-        a, b = a_run.frame(i), b_run.frame(i)
-        if not np.array_equal(a["id"], b["id"]):
-            check(False, "isph %d ranks frame %d: the particle ids of one process" % (ranks, i))
-            continue
-        for field in ("Points", "velocity"):
-            scale = max(np.abs(a[field]).max(), 1e-300)
-            worst = max(worst, np.abs(a[field] - b[field]).max() / scale)
-        check(np.array_equal(a["free_surface"], b["free_surface"]),
-              "isph %d ranks frame %d: free_surface equals one process's" % (ranks, i))
-    check(worst <= POISSON, "isph %d ranks: positions and velocities within %.0e of one process's "
-          "(largest relative difference %.2e)" % (ranks, POISSON, worst))
+    compare("isph", isph[1], isph[ranks], ranks, ("Points", "velocity"), POISSON)
 finish("check_dam_break_ranks")

@@ -9,16 +9,16 @@
 namespace arksph {
 
 DirichletRows surface_rows(const FluidFields& f, std::size_t n, double threshold, double depth,
-                           const std::vector<double>& p_last) {
+                           const std::vector<RenormalisedGradient>& last) {
   DirichletRows given;
   given.fixed = free_surface_particles(f, threshold);
   given.fixed.resize(n);
   given.value.assign(n, 0.0);
-  if (p_last.empty()) return given;
+  if (last.empty()) return given;
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     if (!given.fixed[a]) continue;
-    const RenormalisedGradient g = renormalised_gradient(f, p_last, a);
+    const RenormalisedGradient& g = last[a];
     if (!g.regular) continue;
     double cx = 0, cy = 0;  // sum_b V_b grad_a W_ab: into the fluid
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
@@ -33,12 +33,13 @@ DirichletRows surface_rows(const FluidFields& f, std::size_t n, double threshold
   return given;
 }
 
-std::vector<double> linear_laplacian_defect(const FluidFields& f, const std::vector<double>& p, std::size_t n) {
+std::vector<double> linear_laplacian_defect(const FluidFields& f, const std::vector<RenormalisedGradient>& grad,
+                                            std::size_t n) {
   const double eta2 = ppe_eta2(f);
   std::vector<double> out(n, 0.0);
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    const RenormalisedGradient g = renormalised_gradient(f, p, a);
+    const RenormalisedGradient& g = grad[a];
     if (!g.regular) continue;
     double cx = 0, cy = 0;
     f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double, double F) {

@@ -238,8 +238,8 @@ void Projection::project_velocities(double dt, double t, double* y) {
       const SolveReport rep = poisson_->solve(f, div, dt, solution_);
       stats_.record_solve(rep.iterations, rep.refactored_symbolic, rep.relative_residual);
     }
-    last_pressure_ = domain_->with_halo(solution_);
-    const std::vector<double> defect = linear_laplacian_defect(f, last_pressure_, n);
+    last_gradient_ = renormalised_gradients(f, domain_->with_halo(solution_), n);
+    const std::vector<double> defect = linear_laplacian_defect(f, last_gradient_, n);
     for (std::size_t a = 0; a < n; ++a) div[a] += dt * defect[a];
   }
   stats_.assembly_seconds += seconds_since(ta);
@@ -253,7 +253,7 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
-  if (free_surface_) poisson_->set_given(surface_rows(f, n, surface_threshold_, surface_depth_, last_pressure_));
+  if (free_surface_) poisson_->set_given(surface_rows(f, n, surface_threshold_, surface_depth_, last_gradient_));
   const double assembly_before = poisson_->assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (one P = 0) as the next warm start: a start

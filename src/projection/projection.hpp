@@ -29,6 +29,7 @@
 #include "projection/body_force_split.hpp"
 #include "projection/particle_domain.hpp"
 #include "projection/projection_options.hpp"
+#include "projection/velocity_correction.hpp"
 #include "rhs/pressure_gravity.hpp"
 
 namespace arksph {
@@ -117,7 +118,7 @@ class Projection {
   bool free_surface_;
   double surface_threshold_;
   double surface_depth_;                 // the surface's distance beyond its particles: half a spacing
-  std::vector<double> last_pressure_;   // the last projection's P at every real point (free surface)
+  std::vector<RenormalisedGradient> last_gradient_;  // of the last projection's P (free surface)
   double pressure_offset_;
   double t_prev_ = 0;
   std::vector<double> y_prev_;

@@ -63,6 +63,15 @@ inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const st
   return {(myy * gx - mxy * gy) / det, (mxx * gy - mxy * gx) / det, true};
 }
 
+// The renormalised gradient at each of the first n particles.
+inline std::vector<RenormalisedGradient> renormalised_gradients(const FluidFields& f, const std::vector<double>& p,
+                                                                std::size_t n) {
+  std::vector<RenormalisedGradient> out(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) out[a] = renormalised_gradient(f, p, a);
+  return out;
+}
+
 // The velocity correction at a free surface (fluid.region): u_a <- u_a - dt grad P_a / rho_a with
 // the renormalised gradient above, where C&R eq. 11's symmetric sum turns P_a sum_b m_b grad W_ab,
 // non-zero at a cut support, into a force.

@@ -67,26 +67,12 @@ std::array<int, 4> cell_box(const GridSpec& g, std::size_t n, const double* x, c
   return box;
 }
 
-DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
-                         const double* q, bool extremes) {
-  const std::size_t nc = g.cells();
-  DepositSums d;
-  d.value.assign(nc, 0.0);
-  d.weight.assign(nc, 0.0);
-  if (!extremes) {
-    for (std::size_t a = 0; a < n; ++a) {
-      const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
-      for (int k = 0; k < 4; ++k) {
-        if (c.w[k] == 0) continue;
-        const double wv = c.w[k] * volume[a];
-        d.value[c.cell[k]] += wv * q[a];
-        d.weight[c.cell[k]] += wv;
-      }
-    }
-    return d;
-  }
-  d.lo.assign(nc, HUGE_VAL);
-  d.hi.assign(nc, -HUGE_VAL);
+namespace {
+// The deposit's loop, with or without the cells' extremes (a compile-time choice: the loop without
+// them tests nothing per cell).
+template <bool kExtremes>
+void deposit_into(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                  const double* q, DepositSums& d) {
   for (std::size_t a = 0; a < n; ++a) {
     const CellWeights c = cell_weights(g, x[a], y ? y[a] : 0.0);
     for (int k = 0; k < 4; ++k) {
@@ -94,10 +80,28 @@ DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, cons
       const double wv = c.w[k] * volume[a];
       d.value[c.cell[k]] += wv * q[a];
       d.weight[c.cell[k]] += wv;
-      d.lo[c.cell[k]] = std::min(d.lo[c.cell[k]], q[a]);
-      d.hi[c.cell[k]] = std::max(d.hi[c.cell[k]], q[a]);
+      if constexpr (kExtremes) {
+        d.lo[c.cell[k]] = std::min(d.lo[c.cell[k]], q[a]);
+        d.hi[c.cell[k]] = std::max(d.hi[c.cell[k]], q[a]);
+      }
     }
   }
+}
+}  // namespace
+
+DepositSums deposit_sums(const GridSpec& g, std::size_t n, const double* x, const double* y, const double* volume,
+                         const double* q, bool extremes) {
+  const std::size_t nc = g.cells();
+  DepositSums d;
+  d.value.assign(nc, 0.0);
+  d.weight.assign(nc, 0.0);
+  if (!extremes) {
+    deposit_into<false>(g, n, x, y, volume, q, d);
+    return d;
+  }
+  d.lo.assign(nc, HUGE_VAL);
+  d.hi.assign(nc, -HUGE_VAL);
+  deposit_into<true>(g, n, x, y, volume, q, d);
   return d;
 }
 

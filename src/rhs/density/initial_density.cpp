@@ -23,13 +23,13 @@ const std::vector<Param>& initial_density_params() {
   static const std::vector<Param> params = {
       flag("initial.hydrostatic", false).schemes({"wcsph"})
           .doc("wcsph: start from the density that the Tait equation gives for the hydrostatic pressure "
-               "rho0 g . (r - r_top) of a uniform body force (rho0 g (H - y) under g = (0, -g)); "
-               "continuity: initial density, summation: particle masses")
+               "rho0 g . (r - r_top) of a uniform body force (rho0 g (H - y) under g = (0, -g)), "
+               "with the particle masses scaled by rho / rho0 (each volume m / rho its lattice cell)")
           .to(&Scene::initial_hydrostatic),
       text("initial.pressure", kNoInitialPressure).schemes({"wcsph"}).unit("Pa")
           .doc("wcsph: pressure p(x, y) at t = 0, an expression; the initial density is the Tait "
-               "equation's for it (added to initial.hydrostatic's), so a flow that carries pressure "
-               "starts without pressure waves")
+               "equation's for it (added to initial.hydrostatic's, the masses scaled by rho / rho0), so a "
+               "flow that carries pressure starts without pressure waves")
           .to(&Scene::initial_pressure),
   };
   return params;
@@ -102,7 +102,7 @@ void apply_initial_density(const Scene& scene, double sound_speed, ParticleSet& 
                        message_number(-rho0 * sound_speed * sound_speed / gamma));
     const double rho = rho0 * std::pow(base, 1.0 / gamma);
     if (density_state) p.init_rho[a] = rho;
-    else p.mass[a] *= rho / rho0;
+    p.mass[a] *= rho / rho0;
   }
 }
 

@@ -11,8 +11,15 @@
 //   Taylor-Green vortex, -(rho0 U^2 / 4)(cos 4 pi x + cos 4 pi y).
 // A start at rho = rho0 under a pressure-carrying flow sends pressure waves of velocity amplitude
 // about p / (rho0 c) through the fluid; starting from the matching density avoids them.
-// With a density state (continuity) that density is the initial state; with summation, whose
-// density follows the masses, each particle's mass is scaled by rho / rho0.
+// Each particle's mass is scaled by rho / rho0, so that its volume m / rho stays the lattice cell
+// it was placed in; with a density state (continuity) rho is also the initial state (with
+// summation the density follows the masses). A continuity density raised at the unscaled mass
+// rho0 dx^d would make the volumes V_b = m_b / rho_b of the pressure gradient's sums smaller than
+// the cells by rho0 / rho_b. Under gravity the symmetric gradient (1 / rho_a) sum_b V_b (p_a + p_b)
+// grad W_ab then reads the hydrostatic profile, on the lattice, as (1 - 2 p / (rho c^2)) grad p / rho^2,
+// about (1 - 3 p / (rho0 c^2)) of grad p / rho: the fluid at rest settles to dp/dy about
+// (1 + 4 p / (rho0 c^2)) rho0 g instead of the weakly compressible rho g, i.e. (1 + p / (rho0 c^2)) rho0 g
+// (measured in docs/methods/free-surface.md).
 #pragma once
 #include <vector>
 
@@ -24,7 +31,7 @@ namespace arksph {
 
 const std::vector<Param>& initial_density_params();
 
-// Sets p.init_rho (continuity) or scales p.mass (summation) when initial.hydrostatic or
+// Scales p.mass and, with a density state (continuity), sets p.init_rho when initial.hydrostatic or
 // initial.pressure is set; sound_speed: the resolved c0. Nothing under the projection schemes.
 // Throws InputError where the start is undefined (another equation of state, a force that varies in
 // space, several phases, a pressure below the Tait equation's floor -rho0 c^2 / gamma).

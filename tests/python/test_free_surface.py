@@ -146,6 +146,10 @@ class Refused(unittest.TestCase):
         for projection in ("constrained", "orthogonal"):
             self.refused({"method.scheme": "isph", "method.projection": projection}, projection, "not stable", "cummins_rudman")
 
+    def test_a_free_surface_with_the_density_correction(self):
+        self.refused({"method.scheme": "isph", "method.density_correction": "pozorski_wawrenczuk"},
+                     "pozorski_wawrenczuk", "summation density", "none")
+
     def test_a_phase_outside_the_fluid(self):
         with self.assertRaises(arksph.InputError) as caught:
             arksph.Model(text=COLUMN + '\n[[phase]]\nwhere = "y > 1.2"\ndensity = 2.0\n')

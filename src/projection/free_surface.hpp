@@ -3,8 +3,9 @@
 //   - rows of given pressure at the surface particles, found by the divergence of position (Shao &
 //     Lo 2003; Lind et al. 2012 §2.3, threshold 0.75 d), p = 0 half a spacing beyond them:
 //     surface_rows;
-//   - the velocity correction by the renormalised difference gradient, exact for a linear P at a
-//     cut support (velocity_correction.hpp: subtract_renormalised_gradient);
+//   - the velocity correction by a gradient exact for a linear P at a cut support: the
+//     renormalised difference gradient at the surface rows, the neighbour-based one below them
+//     (velocity_correction.hpp: subtract_renormalised_gradient);
 //   - the Laplacian made exact for a linear P at a cut support: linear_laplacian_defect, lagged by
 //     one projection and moved to the source, so that the matrix stays C&R's eq. 19 (symmetric
 //     positive definite: every Poisson solver, hypre over ranks included, takes it unchanged).

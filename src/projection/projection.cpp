@@ -253,7 +253,11 @@ void Projection::project_velocities(double dt, double t, double* y) {
 void Projection::project_on_particles(const FluidFields& f, const std::vector<double>& div, double dt, double* y) {
   const StateLayout L = domain_->layout();
   const std::size_t n = L.n;
-  if (free_surface_) poisson_->set_given(surface_rows(f, n, surface_threshold_, surface_depth_, last_gradient_));
+  DirichletRows given;
+  if (free_surface_) {
+    given = surface_rows(f, n, surface_threshold_, surface_depth_, last_gradient_);
+    poisson_->set_given(given);
+  }
   const double assembly_before = poisson_->assembly_seconds();
   const auto ts = std::chrono::steady_clock::now();
   // solution_ keeps the pinned system's own solution (one P = 0) as the next warm start: a start
@@ -287,7 +291,7 @@ void Projection::project_on_particles(const FluidFields& f, const std::vector<do
   double* u = y + L.vel(0);
   double* v = L.dim == 2 ? y + L.vel(1) : nullptr;
   if (free_surface_)
-    subtract_renormalised_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
+    subtract_renormalised_gradient(f, domain_->with_halo(pressure_), dt, n, u, v, given.fixed);
   else
     subtract_pressure_gradient(f, domain_->with_halo(pressure_), dt, n, u, v);
 }

@@ -63,6 +63,49 @@ inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const st
   return {(myy * gx - mxy * gy) / det, (mxx * gy - mxy * gx) / det, true};
 }
 
+// The renormalised gradient about the neighbours' own value at a:
+//   grad P_a = B_a sum_b V_b (P_b - Pbar_a) grad_a W_ab,
+// Pbar_a the value at r_a of the linear moving-least-squares fit to the neighbours' P, a itself left
+// out (weights V_b W_ab). Exact for a linear P at any support (there Pbar_a = P_a, and this is the
+// renormalised difference gradient above). P_a itself does not enter: the difference form's self
+// term -P_a B_a sum_b V_b grad_a W_ab, non-zero where the support is cut, is what makes the
+// projection at a surface amplify a particle-scale pattern (docs/methods/free-surface.md).
+inline RenormalisedGradient neighbour_based_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a) {
+  constexpr double kSingularMoment = 0.02;
+  double gx = 0, gy = 0, sx = 0, sy = 0, bxx = 0, bxy = 0, byy = 0;
+  double m0 = 0, m1x = 0, m1y = 0, mxx = 0, mxy = 0, myy = 0, q0 = 0, qx = 0, qy = 0;
+  f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
+    const double vb = f.m[b] / f.rho[b];
+    const double pb = f.point_pressure(p, b);
+    gx += vb * pb * F * rx;
+    gy += vb * pb * F * ry;
+    sx += vb * F * rx;
+    sy += vb * F * ry;
+    bxx -= vb * F * rx * rx;
+    bxy -= vb * F * rx * ry;
+    byy -= vb * F * ry * ry;
+    if (!(r2 > 0)) return;
+    const double c = vb * w, ex = -rx, ey = -ry;  // r_b - r_a
+    m0 += c;
+    m1x += c * ex;
+    m1y += c * ey;
+    mxx += c * ex * ex;
+    mxy += c * ex * ey;
+    myy += c * ey * ey;
+    q0 += c * pb;
+    qx += c * ex * pb;
+    qy += c * ey * pb;
+  });
+  const double det = bxx * byy - bxy * bxy, det2 = mxx * myy - mxy * mxy;
+  if (f.dim != 2 || !(det > kSingularMoment) || !(det2 > 0)) return renormalised_gradient(f, p, a);
+  const double ix = (myy * m1x - mxy * m1y) / det2, iy = (mxx * m1y - mxy * m1x) / det2;  // M2^-1 m1
+  const double rest = m0 - (m1x * ix + m1y * iy);
+  if (!(rest > 0)) return renormalised_gradient(f, p, a);
+  const double pbar = (q0 - (ix * qx + iy * qy)) / rest;
+  const double hx = gx - pbar * sx, hy = gy - pbar * sy;
+  return {(byy * hx - bxy * hy) / det, (bxx * hy - bxy * hx) / det, true};
+}
+
 // The renormalised gradient at each of the first n particles.
 inline std::vector<RenormalisedGradient> renormalised_gradients(const FluidFields& f, const std::vector<double>& p,
                                                                 std::size_t n) {
@@ -73,13 +116,18 @@ inline std::vector<RenormalisedGradient> renormalised_gradients(const FluidField
 }
 
 // The velocity correction at a free surface (fluid.region): u_a <- u_a - dt grad P_a / rho_a with
-// the renormalised gradient above, where C&R eq. 11's symmetric sum turns P_a sum_b m_b grad W_ab,
-// non-zero at a cut support, into a force.
+// a gradient exact for a linear P at a cut support, where C&R eq. 11's symmetric sum turns
+// P_a sum_b m_b grad W_ab into a force: at the surface rows (`surface`: the rows of given P) the
+// renormalised difference gradient, below them the neighbour-based one. Below the surface the
+// difference form's self term makes the projection amplify the second row's odd-even motion at
+// every projection (by 1.019 a projection at h = 2 dx); at the surface rows the neighbour-based
+// gradient lets the column at rest of docs/methods/free-surface.md start moving at its top corners
+// after t ~ 7, which the renormalised one there does not.
 inline void subtract_renormalised_gradient(const FluidFields& f, const std::vector<double>& p, double dt,
-                                           std::size_t n, double* u, double* v) {
+                                           std::size_t n, double* u, double* v, const std::vector<char>& surface) {
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    const RenormalisedGradient g = renormalised_gradient(f, p, a);
+    const RenormalisedGradient g = surface[a] ? renormalised_gradient(f, p, a) : neighbour_based_gradient(f, p, a);
     u[a] -= dt * g.x / f.rho[a];
     if (v) v[a] -= dt * g.y / f.rho[a];
   }

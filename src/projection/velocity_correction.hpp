@@ -40,12 +40,12 @@ inline void subtract_pressure_gradient(const FluidFields& f, const std::vector<d
 // one a free surface cuts. Where B_a's matrix is near-singular (det below kSingularMoment; 1 in the
 // bulk, 1/4 at a flat surface, 1/16 at a right-angled corner of the fluid: a particle with a few
 // neighbours on one side) the plain difference form without B_a, and regular = false.
+constexpr double kSingularMoment = 0.02;
 struct RenormalisedGradient {
   double x = 0, y = 0;
   bool regular = false;
 };
 inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a) {
-  constexpr double kSingularMoment = 0.02;
   double gx = 0, gy = 0, mxx = 0, mxy = 0, myy = 0;
   f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
     const double vb = f.m[b] / f.rho[b];
@@ -71,7 +71,6 @@ inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const st
 // term -P_a B_a sum_b V_b grad_a W_ab, non-zero where the support is cut, is what makes the
 // projection at a surface amplify a particle-scale pattern (docs/methods/free-surface.md).
 inline RenormalisedGradient neighbour_based_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a) {
-  constexpr double kSingularMoment = 0.02;
   double gx = 0, gy = 0, sx = 0, sy = 0, bxx = 0, bxy = 0, byy = 0;
   double m0 = 0, m1x = 0, m1y = 0, mxx = 0, mxy = 0, myy = 0, q0 = 0, qx = 0, qy = 0;
   f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {

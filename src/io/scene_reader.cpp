@@ -260,12 +260,11 @@ void check_fluid(const Section& f, const Scene& s) {
   if (scheme.grid)  // Szewc et al. 2012 §4.2: the grid's Poisson equation fills the box
     f.fail("region", "a free surface needs the pressure on the particles: isph-gpps solves it on a grid over the "
                      "whole box (Szewc et al. 2012), which has no free surface; use wcsph");
-  // ISPH: C&R's projection after each step takes the surface (projection/free_surface.hpp); a
-  // pressure inside f(t, y) does not yet (docs/methods/free-surface.md).
-  if (!scheme.weakly_compressible && s.projection != ProjectionMethod::cummins_rudman)
-    f.fail("region", "a free surface under method.projection = \"" + projection_methods().name(s.projection) +
-                         "\": its pressure inside f(t, y) is not stable at the surface yet (docs/methods/free-surface.md); "
-                         "use method.projection = \"cummins_rudman\"");
+  // ISPH: C&R's projection and the constrained one take the surface's rows
+  // (projection/free_surface.hpp); the orthogonal projection's coarse pressure space has none.
+  if (!scheme.weakly_compressible && s.projection == ProjectionMethod::orthogonal)
+    f.fail("region", "a free surface under method.projection = \"orthogonal\": its coarse pressure space has no rows "
+                     "for the surface (docs/methods/free-surface.md); use \"constrained\" or \"cummins_rudman\"");
   // The P-W correction moves the particles until their summation density is rho0 (Szewc et al.
   // 2012 eqs. 57-58), which the cut supports at a surface cannot reach: there it solves for nothing
   // (the a/20 dam break: 8 % r.m.s. density error at every step, no iteration taken).

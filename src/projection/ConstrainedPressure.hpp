@@ -69,6 +69,8 @@
 #include "projection/divergence_operator.hpp"
 #include "projection/correction/density_relaxation.hpp"
 #include "projection/particle_domain.hpp"
+#include "projection/ppe_assembly.hpp"
+#include "projection/velocity_correction.hpp"
 #include "rhs/evaluator.hpp"
 
 namespace arksph {
@@ -105,6 +107,9 @@ class ConstrainedPressure {
   // p_ from L p = source, at the fields of the last eval, into solution (warm start in); returns
   // the solver's report.
   SolveReport solve_pressure(const std::vector<double>& source, std::vector<double>& solution);
+  // At a free surface: p_ with the surface's rows and the Laplacian's defect at their fixed point;
+  // `given` the rows of the last solve.
+  SolveReport solve_at_surface(const std::vector<double>& source, DirichletRows& given);
   // The orthogonal projection's pressure and gradient (gx_, gy_) for the source div_ of the last
   // evaluation, (u, v) the velocities that move the particles across the grid.
   void coarse_pressure(const double* u, const double* v);
@@ -117,6 +122,11 @@ class ConstrainedPressure {
   std::unique_ptr<DensityRelaxation> density_;
   std::unique_ptr<CoarsePressureSpace> coarse_;  // method.projection = "orthogonal"
   DivergenceOperator operator_;
+  // At a free surface (fluid.region): the surface rows and the lagged Laplacian defect of
+  // projection/free_surface.hpp, as in C&R's projection; the renormalised gradients of the last p.
+  bool free_surface_;
+  double surface_threshold_, surface_depth_;
+  std::vector<RenormalisedGradient> last_gradient_;
   std::vector<double> p_, solution_, div_, udiv_, cx_, cy_, gx_, gy_, wx_, wy_, bx_, by_;
 };
 

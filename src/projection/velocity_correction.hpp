@@ -45,11 +45,13 @@ struct RenormalisedGradient {
   double x = 0, y = 0;
   bool regular = false;
 };
-inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a) {
+// steps = false: ghosts take their source's P alone (a potential, not a pressure under a body force).
+inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a,
+                                                  bool steps = true) {
   double gx = 0, gy = 0, mxx = 0, mxy = 0, myy = 0;
   f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double, double, double F) {
     const double vb = f.m[b] / f.rho[b];
-    const double dp = f.point_pressure(p, b) - p[a];
+    const double dp = (steps ? f.point_pressure(p, b) : p[f.src[b]]) - p[a];
     gx += vb * dp * F * rx;
     gy += vb * dp * F * ry;
     mxx -= vb * F * rx * rx;
@@ -70,12 +72,13 @@ inline RenormalisedGradient renormalised_gradient(const FluidFields& f, const st
 // renormalised difference gradient above). P_a itself does not enter: the difference form's self
 // term -P_a B_a sum_b V_b grad_a W_ab, non-zero where the support is cut, is what makes the
 // projection at a surface amplify a particle-scale pattern (docs/methods/free-surface.md).
-inline RenormalisedGradient neighbour_based_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a) {
+inline RenormalisedGradient neighbour_based_gradient(const FluidFields& f, const std::vector<double>& p, std::size_t a,
+                                                     bool steps = true) {
   double gx = 0, gy = 0, sx = 0, sy = 0, bxx = 0, bxy = 0, byy = 0;
   double m0 = 0, m1x = 0, m1y = 0, mxx = 0, mxy = 0, myy = 0, q0 = 0, qx = 0, qy = 0;
   f.pairs.for_pairs(a, [&](std::uint32_t b, double rx, double ry, double r2, double w, double F) {
     const double vb = f.m[b] / f.rho[b];
-    const double pb = f.point_pressure(p, b);
+    const double pb = steps ? f.point_pressure(p, b) : p[f.src[b]];
     gx += vb * pb * F * rx;
     gy += vb * pb * F * ry;
     sx += vb * F * rx;
@@ -96,10 +99,10 @@ inline RenormalisedGradient neighbour_based_gradient(const FluidFields& f, const
     qy += c * ey * pb;
   });
   const double det = bxx * byy - bxy * bxy, det2 = mxx * myy - mxy * mxy;
-  if (f.dim != 2 || !(det > kSingularMoment) || !(det2 > 0)) return renormalised_gradient(f, p, a);
+  if (f.dim != 2 || !(det > kSingularMoment) || !(det2 > 0)) return renormalised_gradient(f, p, a, steps);
   const double ix = (myy * m1x - mxy * m1y) / det2, iy = (mxx * m1y - mxy * m1x) / det2;  // M2^-1 m1
   const double rest = m0 - (m1x * ix + m1y * iy);
-  if (!(rest > 0)) return renormalised_gradient(f, p, a);
+  if (!(rest > 0)) return renormalised_gradient(f, p, a, steps);
   const double pbar = (q0 - (ix * qx + iy * qy)) / rest;
   const double hx = gx - pbar * sx, hy = gy - pbar * sy;
   return {(byy * hx - bxy * hy) / det, (bxx * hy - bxy * hx) / det, true};
@@ -123,10 +126,12 @@ inline std::vector<RenormalisedGradient> renormalised_gradients(const FluidField
 // gradient lets the column at rest of docs/methods/free-surface.md start moving at its top corners
 // after t ~ 7, which the renormalised one there does not.
 inline void subtract_renormalised_gradient(const FluidFields& f, const std::vector<double>& p, double dt,
-                                           std::size_t n, double* u, double* v, const std::vector<char>& surface) {
+                                           std::size_t n, double* u, double* v, const std::vector<char>& surface,
+                                           bool steps = true) {
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    const RenormalisedGradient g = surface[a] ? renormalised_gradient(f, p, a) : neighbour_based_gradient(f, p, a);
+    const RenormalisedGradient g =
+        surface[a] ? renormalised_gradient(f, p, a, steps) : neighbour_based_gradient(f, p, a, steps);
     u[a] -= dt * g.x / f.rho[a];
     if (v) v[a] -= dt * g.y / f.rho[a];
   }

@@ -21,13 +21,13 @@
 // At a free surface (fluid.region) grad C points into the fluid wherever the surface cuts the
 // support, and du would push the particles out through the surface. Lind et al. 2012 (§2.3) shift
 // the particles on and near the surface along it only: du = -D (dC/ds s + alpha dC/dn n), alpha = 0.
-// Here, where the particle's own support is cut (the divergence of position
-// div r_a = -sum_b V0 r_ab . grad_a W_ab below kSurfaceBand d; d in a full support), the part of grad C along the outward normal
-// n = -g / |g|, g = sum_b V0 grad_a W_ab (the plain concentration gradient), is removed when it
-// would move the particle outwards; inwards and along the surface it is kept. Without the
-// anti-clumping weight grad C is g, and those particles are not shifted at all; with it, what is
-// left is the near neighbours' repulsion along the surface. A criterion of the particle's own
-// support, so that a rank needs no neighbour's flag.
+// Here the particles whose own support is cut (the divergence of position
+// div r_a = -sum_b V0 r_ab . grad_a W_ab below kSurfaceBand d; d in a full support) are not shifted
+// at all. Along the surface is not a direction at the tip of a surge or a corner of the fluid: with
+// the outward part of grad C removed (along n = -g / |g|, g = sum_b V0 grad_a W_ab) and the rest
+// kept, the tip particles of a dam break's surge were shifted forwards along the floor and the
+// front ran ahead (docs/methods/free-surface.md). A criterion of the particle's own support, so that
+// a rank needs no neighbour's flag.
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -51,9 +51,7 @@ constexpr int kAntiClumpN = 4;  // Lind et al. 2012 eq. 10
 // The support counts as cut by a free surface below this fraction of the full divergence of position
 // d: the top two rows under a flat surface (div r = 1.18 and 1.63 of 2 in 2D, Wendland quintic with
 // h = 2 dx), not the third (1.94), whose small outward push is kept so that a sparse spot inside the
-// fluid, where div r dips too, is still filled. Measured with method.shifting_speed = 1: the dam
-// break's front (dx = a/20) within 0.046 a of the unshifted run's up to the impact (0.96 a ahead
-// untreated); the standing wave's period -0.36 % and decay 0.96 of Lamb's (0.985 d: +0.70 %, 1.21).
+// fluid, where div r dips too, is still filled. docs/methods/free-surface.md has the figures.
 constexpr double kSurfaceBand = 0.9;
 // Explicit steps keep the linearised shifting stable (rhs/regularisation/shifting_stability.hpp) when rate * dt <= 2:
 // the reach along the negative real axis of forward Euler and of the two-stage second-order tables
@@ -199,7 +197,7 @@ class Shifting final : public ParticleTerm<Shifting> {
     const bool two = two_d<C>(f);
     auto [gcx, gcy_any] = grad_c<kClump>(nb);
     double gcy = two ? gcy_any : 0.0;
-    if (band_ > 0) along_surface(nb, gcx, gcy);
+    if (band_ > 0 && support_cut(nb)) gcx = gcy = 0.0;
     const double ua = f.u[a], va = two ? f.v[a] : 0.0, rho_a = f.rho[a];
     // The carried fields along grad C (du_a is a multiple of it, applied after the sums, so that
     // the pair loop does not wait for the saturation's square root).
@@ -251,22 +249,13 @@ class Shifting final : public ParticleTerm<Shifting> {
     }
   }
 
-  // grad C without its outward part where the particle's support is cut by a free surface (the
-  // header): div r / V0 = -sum_b F_ab r_ab^2 and g / V0 = sum_b F_ab r_ab, grad_a W_ab = F_ab r_ab.
+  // Whether a free surface cuts the particle's support (the header): div r / V0 = -sum_b F_ab r_ab^2
+  // below the band, grad_a W_ab = F_ab r_ab.
   template <class Neighbors>
-  void along_surface(const Neighbors& nb, double& gcx, double& gcy) const {
-    double div = 0, gx = 0, gy = 0;
-    nb.for_pairs([&](std::uint32_t, double rx, double ry, double r2, double, double F) {
-      div -= F * r2;
-      gx += F * rx;
-      gy += F * ry;
-    });
-    const double g2 = gx * gx + gy * gy;
-    if (div >= band_ || g2 == 0) return;
-    const double along = (gcx * gx + gcy * gy) / g2;  // grad C . g / |g|^2
-    if (along <= 0) return;  // du = k grad C, k < 0: moves the particle inwards already
-    gcx -= along * gx;
-    gcy -= along * gy;
+  bool support_cut(const Neighbors& nb) const {
+    double div = 0;
+    nb.for_pairs([&](std::uint32_t, double, double, double r2, double, double F) { div -= F * r2; });
+    return div < band_;
   }
 
   const PressureGradientColagrossi* pressure_ = nullptr;  // taken over (take_over)

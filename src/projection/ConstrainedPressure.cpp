@@ -121,12 +121,11 @@ void ConstrainedPressure::permute_particles(const std::vector<std::uint32_t>& fr
 
 SolveReport ConstrainedPressure::solve_pressure(const std::vector<double>& source, std::vector<double>& solution) {
   const SolveReport rep = poisson_->solve(domain_.fields(), source, 1.0, solution);
-  // A free surface fixes the level (p = 0 there) and p >= 0 below it, as in C&R's projection
-  // (projection.cpp says why).
+  // A free surface fixes the level: p = 0 there.
   const double level = free_surface_ ? 0.0 : domain_.level(solution, zero_min_level_);
   const std::size_t n = solution.size();
   p_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) p_[a] = free_surface_ ? std::max(solution[a], 0.0) : solution[a] - level;
+  for (std::size_t a = 0; a < n; ++a) p_[a] = solution[a] - level;
   return rep;
 }
 
@@ -162,6 +161,8 @@ SolveReport ConstrainedPressure::solve_at_surface(const std::vector<double>& sou
     if (!(domain_.largest(change) > kFixedPointTolerance * domain_.largest(size)) || k + 1 >= kMaxFixedPointIterations)
       break;
   }
+  // No suction below the surface, p >= 0, as in C&R's projection (projection.cpp says why).
+  for (double& p : p_) p = std::max(p, 0.0);
   return rep;
 }
 

@@ -122,8 +122,9 @@ class ConstrainedPressure {
   std::unique_ptr<DensityRelaxation> density_;
   std::unique_ptr<CoarsePressureSpace> coarse_;  // method.projection = "orthogonal"
   DivergenceOperator operator_;
-  // At a free surface (fluid.region): the surface rows and the lagged Laplacian defect of
-  // projection/free_surface.hpp, as in C&R's projection; the renormalised gradients of the last p.
+  // At a free surface (fluid.region): the surface rows and the Laplacian defect of
+  // projection/free_surface.hpp, iterated to their fixed point (solve_at_surface); the renormalised
+  // gradients of the last p.
   bool free_surface_;
   double surface_threshold_, surface_depth_;
   std::vector<RenormalisedGradient> last_gradient_;

@@ -1,5 +1,5 @@
 // The constrained projection at a free surface (projection/ConstrainedPressure.hpp with
-// projection/free_surface.hpp), on a small standing wave (cases/standing_wave at dx = 0.1):
+// projection/free_surface.hpp), on the standing wave of cases/standing_wave at dx = 0.1:
 //   - f(t, y) is a function of (t, y): the surface values and the Laplacian's defect, which depend
 //     on p itself, are iterated to their fixed point inside each evaluation, so that an evaluation
 //     at another state in between does not change it (with the terms lagged by one evaluation
@@ -9,8 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "io/scene_reader.hpp"
 #include "run/setup.hpp"
@@ -20,33 +18,13 @@
 using namespace arksph;
 
 namespace {
-const char* kWave = R"toml(
-[scene]
-name = "constrained_wave"
-[domain]
-min = [0.0, 0.0]
-max = [2.0, 1.5]
-[boundary]
-left   = { kind = "wall", slip = "free_slip" }
-right  = { kind = "wall", slip = "free_slip" }
-bottom = { kind = "wall", slip = "free_slip" }
-top    = { kind = "wall", slip = "free_slip" }
-[fluid]
-spacing = 0.1
-region = "y < 1"
-viscosity = 0.005
-body_force = ["0", "-1"]
-[initial]
-velocity = ["-0.0052156*cosh(pi/2*y)*sin(pi/2*x)", "0.0052156*sinh(pi/2*y)*cos(pi/2*x)"]
-[method]
-scheme = "isph"
-projection = "constrained"
-ppe_solver = "klu"
-[time]
-end = 0.8
-integrator = "ARKODE_HEUN_EULER_2_1_2"
-dt = 0.04
-)toml";
+// The case's scene (cases/standing_wave/scene.toml) on a coarser lattice, under the constrained
+// projection with KLU and a fixed Heun-Euler step.
+const std::string kWave = std::string(ARKSPH_SOURCE_DIR) + "/cases/standing_wave/scene.toml";
+const std::vector<std::string> kWaveSets = {"fluid.spacing=0.1",        "method.scheme=isph",
+                                            "method.projection=constrained", "method.ppe_solver=klu",
+                                            "time.end=0.8",             "output.every=0.8",
+                                            "time.integrator=ARKODE_HEUN_EULER_2_1_2", "time.dt=0.04"};
 
 // f(0, y): the right-hand side with the constrained pressure applied.
 std::vector<double> constrained_rate(Model& model, const std::vector<double>& y) {
@@ -60,8 +38,7 @@ std::vector<double> constrained_rate(Model& model, const std::vector<double>& y)
 // Tolerance 1e-10 of the largest rate: the fixed point is iterated to 1e-12 of the largest p, and
 // a direct solver (KLU) gives each iterate to round-off.
 TEST_CASE("constrained projection at a free surface: f is a function of (t, y), not of the last evaluation") {
-  std::ostringstream warnings;
-  const Scene scene = read_scene_text(kWave, "<test>", {}, warnings);
+  const Scene scene = read_scene_file(kWave, kWaveSets);
   Model model = build_model(scene);
   std::vector<double> y(model.rhs->layout().size(), 0.0);
   model.rhs->initial_state(y.data());
@@ -85,11 +62,9 @@ TEST_CASE("constrained projection at a free surface: f is a function of (t, y), 
 // The order study's fit (velocity and pressure), as for the vortex of test_constrained_projection.cpp.
 TEST_CASE("constrained projection at a free surface: Heun-Euler and Bogacki-Shampine keep their orders" *
           doctest::test_suite("long")) {
-  const testing::ScratchDir scratch("constrained_surface_order");
-  const std::string scene_path = scratch / "wave.toml";
-  std::ofstream(scene_path) << kWave;
   OrderStudy study;
-  study.scene = scene_path;
+  study.scene = kWave;
+  study.sets = kWaveSets;
   study.tables = {"ARKODE_HEUN_EULER_2_1_2", "ARKODE_BOGACKI_SHAMPINE_4_2_3"};
   study.dt = {0.08, 0.04, 0.02};
   study.reference_table = "ARKODE_DORMAND_PRINCE_7_4_5";

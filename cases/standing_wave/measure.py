@@ -30,24 +30,34 @@ def maxima(t, e):
     return np.array(out)
 
 
+def theory_period():
+    k = np.pi / L
+    return 2 * np.pi / np.sqrt(G * k * np.tanh(k * H))
+
+
+def measure(run):
+    """(period, amplitude decay rate, Lamb's rate) of the run in directory `run`."""
+    k = np.pi / L
+    with open(Path(run) / "timeseries.csv") as f:
+        rows = list(csv.DictReader(f))
+    t = np.array([float(r["t"]) for r in rows])
+    e = np.array([float(r["kinetic_energy"]) for r in rows])
+    # the viscosity as the run resolved it (summary.json's resolved_scene, TOML text)
+    summary = (Path(run) / "summary.json").read_text()
+    nu = float(re.search(r"viscosity = ([0-9.eE+-]+)", summary).group(1))
+    m = maxima(t, e)
+    measured = 2 * np.diff(m[:, 0]).mean()
+    rate = -np.polyfit(m[:, 0], np.log(m[:, 1]), 1)[0] / 2
+    return measured, rate, 2 * nu * k * k
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
-    k = np.pi / L
-    period = 2 * np.pi / np.sqrt(G * k * np.tanh(k * H))
+    period = theory_period()
     print("theory: period %.4f" % period)
     for run in sys.argv[1:]:
-        with open(Path(run) / "timeseries.csv") as f:
-            rows = list(csv.DictReader(f))
-        t = np.array([float(r["t"]) for r in rows])
-        e = np.array([float(r["kinetic_energy"]) for r in rows])
-        # the viscosity as the run resolved it (summary.json's resolved_scene, TOML text)
-        summary = (Path(run) / "summary.json").read_text()
-        nu = float(re.search(r"viscosity = ([0-9.eE+-]+)", summary).group(1))
-        m = maxima(t, e)
-        measured = 2 * np.diff(m[:, 0]).mean()
-        rate = -np.polyfit(m[:, 0], np.log(m[:, 1]), 1)[0] / 2
-        lamb = 2 * nu * k * k
+        measured, rate, lamb = measure(run)
         print("%s: period %.4f (%+.2f %%), amplitude decay rate %.5f, Lamb's %.5f (ratio %.2f)"
               % (run, measured, 100 * (measured / period - 1), rate, lamb, rate / lamb))
 

@@ -13,6 +13,7 @@
 #include "projection/ppe_assembly.hpp"
 #include "projection/projection_options.hpp"
 #include "projection/velocity_correction.hpp"
+#include "rhs/body_force_field.hpp"
 
 namespace arksph {
 
@@ -42,10 +43,29 @@ double flow_rate(const Scene& scene, const RhsEvaluator& rhs) {
   return speed / h;
 }
 
+double surface_gravity_rate(const Scene& scene) {
+  if (scene.fluid_region.empty()) return 0.0;
+  const BodyForceField force(scene.body_force, scene.dimension);
+  if (force.zero()) return 0.0;
+  // |g| at t = 0 on a 17 x 17 lattice of the domain (exact for a uniform g).
+  constexpr int kSamples = 17;
+  double g_max = 0;
+  for (int i = 0; i < kSamples; ++i)
+    for (int j = 0; j < kSamples; ++j) {
+      const double x = scene.min[0] + (scene.max[0] - scene.min[0]) * i / (kSamples - 1);
+      const double y = scene.min[1] + (scene.max[1] - scene.min[1]) * j / (kSamples - 1);
+      double g[2];
+      force.at(x, y, 0.0, g);
+      g_max = std::max(g_max, std::hypot(g[0], g[1]));
+    }
+  const double h = scene.h_over_dx * scene.spacing;
+  return g_max > 0 && std::isfinite(g_max) ? 4.0 * std::sqrt(g_max / h) : 0.0;
+}
+
 double relaxation_rate(const Scene& scene, double flow_rate) {
   const double beta = scene.projection == ProjectionMethod::orthogonal ? scene.orthogonal_relaxation
                                                                                  : scene.constraint_relaxation;
-  return beta * flow_rate;
+  return std::max(beta * flow_rate, beta > 0 ? surface_gravity_rate(scene) : 0.0);
 }
 
 ConstrainedPressure::ConstrainedPressure(const Scene& scene, ParticleDomain& domain, double flow_rate)

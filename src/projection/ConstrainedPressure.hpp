@@ -77,8 +77,12 @@ namespace arksph {
 
 // U / h, U the largest initial or wall speed (h / time.end for a fluid at rest between still walls).
 double flow_rate(const Scene& scene, const RhsEvaluator& rhs);
+// At a free surface under a body force g: 4 sqrt(|g| / h), the inverse of the body-force step of
+// Szewc et al. 2012 eq. 37 (dt <= 0.25 sqrt(h / |g|)); 0 otherwise.
+double surface_gravity_rate(const Scene& scene);
 // alpha = beta U / h, beta = method.constraint_relaxation (method.orthogonal_relaxation for the
-// orthogonal projection).
+// orthogonal projection); at a free surface under a body force at least surface_gravity_rate
+// (beta = 0 switches the relaxation off altogether).
 double relaxation_rate(const Scene& scene, double flow_rate);
 
 class ConstrainedPressure {

@@ -67,7 +67,7 @@ const std::vector<Param>& projection_params() {
           .doc("orthogonal projection: beta of its relaxation rate alpha = beta U/h (as method.constraint_relaxation; smaller, because the coarse divergence of a smooth flow on disordered particles is not zero, and relaxing it damps the flow)")
           .to(&Scene::orthogonal_relaxation),
       number("method.constraint_relaxation", 1.0).in(at_least(0))
-          .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed)")
+          .doc("constrained projection: beta of the decay rate alpha = beta U/h of a divergence left by the time integration, d(Du)/dt = -alpha Du (U: the largest initial or wall speed); at a free surface under a body force g at least 4 sqrt(|g|/h), the inverse of the body-force step; 0: no relaxation")
           .to(&Scene::constraint_relaxation),
       choice("method.ppe_operator", "approximate").choices(projection_options().ppe_operator.names())
           .doc("Laplacian of the PPE: approximate (Cummins & Rudman 1999 eq. 19) or exact (eq. 18: odd-even decoupling; scheme isph with klu only)")

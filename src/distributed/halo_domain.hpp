@@ -41,6 +41,7 @@ class HaloDomain : public ParticleDomain {
   void set_slip_origin(bool on, double t0) override { f_.set_slip_origin(on, t0); }
   double level(const std::vector<double>& p, bool zero_min) const override;
   double largest(double x) const override { return comm_.max(x); }
+  void sum_in_place(std::vector<double>& v) const override { comm_.sum_in_place(v); }
   std::vector<double> with_halo(const std::vector<double>& own) const override;
   std::pair<std::vector<double>, std::vector<double>> with_halo(const std::vector<double>& a,
                                                                 const std::vector<double>& b) const override;

@@ -64,6 +64,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "projection/anderson_acceleration.hpp"
 #include "projection/body_force_split.hpp"
 #include "projection/poisson/coarse_pressure_space.hpp"
 #include "projection/divergence_operator.hpp"
@@ -99,6 +100,14 @@ class ConstrainedPressure {
   // evaluation (the projection itself, for its idempotence test).
   void project_orthogonal(double* u, double* v);
   double relaxation() const { return relaxation_; }
+  // At a free surface: the evaluations that iterated the surface's terms, the Poisson solves of those
+  // iterations, and the evaluations that stopped at the iteration limit short of the fixed point
+  // (summary.json ppe.surface_*).
+  struct SurfaceStats {
+    long evaluations = 0, solves = 0, unconverged = 0;
+  };
+  bool free_surface() const { return free_surface_; }
+  const SurfaceStats& surface_stats() const { return surface_stats_; }
   // The P-W correction as a velocity inside f (method.density_correction), or null.
   const DensityRelaxation* density_relaxation() const { return density_.get(); }
   std::string solver_name() const { return poisson_->name(); }
@@ -131,6 +140,8 @@ class ConstrainedPressure {
   // gradients of the last p.
   bool free_surface_;
   double surface_threshold_, surface_depth_;
+  AndersonAcceleration anderson_;  // of that fixed-point iteration
+  SurfaceStats surface_stats_;
   std::vector<RenormalisedGradient> last_gradient_;
   std::vector<double> p_, solution_, div_, udiv_, cx_, cy_, gx_, gy_, wx_, wy_, bx_, by_;
 };

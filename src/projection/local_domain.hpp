@@ -41,6 +41,7 @@ class LocalDomain : public ParticleDomain {
   void set_slip_origin(bool on, double t0) override { rhs_.set_slip_origin(on, t0); }
   double level(const std::vector<double>& p, bool zero_min) const override;
   double largest(double x) const override { return x; }
+  void sum_in_place(std::vector<double>&) const override {}
   std::vector<double> with_halo(const std::vector<double>& own) const override { return own; }
   std::pair<std::vector<double>, std::vector<double>> with_halo(const std::vector<double>& a,
                                                                 const std::vector<double>& b) const override {

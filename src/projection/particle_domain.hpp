@@ -69,6 +69,8 @@ class ParticleDomain {
   virtual double level(const std::vector<double>& p, bool zero_min) const = 0;
   // The largest of x over every rank (one process: x).
   virtual double largest(double x) const = 0;
+  // v summed element-wise over every rank, in place (one process: unchanged).
+  virtual void sum_in_place(std::vector<double>& v) const = 0;
   // The own particles' values followed by their halo copies': one value per real point of the fields.
   virtual std::vector<double> with_halo(const std::vector<double>& own) const = 0;
   // The same for two fields at once (the components of a vector).

@@ -223,7 +223,14 @@ void RunOutput::finish(const RunResult& result, const StepStats& stats, const Ru
     ppe_json.set("seconds_per_solve", ps.solves ? ps.seconds / ps.solves : 0.0);
     ppe_json.set("last_residual", ps.last_residual).set("max_residual", ps.max_residual);
     ppe_json.set("iterations", ps.iterations).set("symbolic_analyses", ps.symbolic_analyses);
-    if (const ConstrainedPressure* c = model_.projection->constraint()) ppe_json.set("constraint_relaxation_rate", c->relaxation());
+    if (const ConstrainedPressure* c = model_.projection->constraint()) {
+      ppe_json.set("constraint_relaxation_rate", c->relaxation());
+      if (c->free_surface()) {
+        const ConstrainedPressure::SurfaceStats& st = c->surface_stats();
+        ppe_json.set("surface_evaluations", st.evaluations).set("surface_solves", st.solves);
+        ppe_json.set("surface_unconverged", st.unconverged);
+      }
+    }
     j.set("ppe", ppe_json);
     const DensityCorrection* c = model_.projection->correction();
     if (c) {

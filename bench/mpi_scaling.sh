@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Scaling of a decomposed WCSPH run over MPI ranks (docs/scaling.md, bench/README.md).
+# Scaling of a decomposed run over MPI ranks (docs/scaling.md, bench/README.md).
 #
 #   bench/mpi_scaling.sh [--build DIR] [--out DIR] [--spacing DX] [--steps S] [--mpirun "CMD"]
+#                        [--scheme NAME] [--step F]
 #
 # The doubly periodic box of bench/big_1e6.toml (Wendland C2, h = 2 dx, c = 10) with a vortex field
 # periodic on both the unit box and its lower half, u = (sin 2pi x cos 4pi y, -1/2 cos 2pi x sin 4pi y):
@@ -13,7 +14,9 @@
 #   strong-1   1 rank,  1 thread,  unit box (N)
 #   pair-1     two weak-1 runs at once, no MPI: what the machine gives two processes of N/2 each
 #              (shared memory bandwidth and caches), the ceiling of the weak scaling
-# Each runs to t = S * 0.045 DX (about S steps of the stability limit 0.25 h / (c + |u|)), frames
+# --scheme: method.scheme (default wcsph). Each runs to t = S * F * DX, F = --step (default 0.045:
+# about S steps of WCSPH's stability limit 0.25 h / (c + |u|); for isph the viscous limit
+# 0.125 h^2 / nu, F = 0.5 DX / nu: 0.07 at DX = 1/700), frames
 # only at t = 0 and the end. One rank is a plain process (no mpirun). Time per step: summary.json
 # timing.stepping (the steps alone: no set-up, frames or checkpoints) over the steps.
 # Memory: the largest resident set (one process: /usr/bin/time; ranks: summary.json
@@ -25,6 +28,8 @@ build=build
 out=bench-runs/mpi_scaling
 spacing=0.001
 steps=10
+scheme=wcsph
+step=0.045
 mpirun_cmd="mpirun --allow-run-as-root --oversubscribe"
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -33,7 +38,9 @@ while [ $# -gt 0 ]; do
     --spacing) spacing=$2; shift 2 ;;
     --steps) steps=$2; shift 2 ;;
     --mpirun) mpirun_cmd=$2; shift 2 ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    --scheme) scheme=$2; shift 2 ;;
+    --step) step=$2; shift 2 ;;
+    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
     *) echo "mpi_scaling.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -41,8 +48,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 arksph=$(cd "$build" && pwd)/arksph
 scene=$here/big_1e6.toml
 mkdir -p "$out"
-end=$(python3 -c "print(repr($steps * 0.045 * $spacing))")
+end=$(python3 -c "print(repr($steps * $step * $spacing))")
 common=(--set "fluid.spacing=$spacing" --set "time.end=$end" --set "output.every=0" --quiet --overwrite
+        --set "method.scheme=$scheme"
         --set 'initial.velocity=["sin(2*pi*x)*cos(4*pi*y)", "-0.5*cos(2*pi*x)*sin(4*pi*y)"]')
 half=(--set 'domain.max=[1.0, 0.5]')
 

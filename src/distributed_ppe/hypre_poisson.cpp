@@ -3,6 +3,7 @@
 #include <HYPRE.h>
 #include <HYPRE_krylov.h>
 #include <HYPRE_parcsr_ls.h>
+#include <_hypre_parcsr_mv.h>  // the ParCSR matrix written in place (make_matrices)
 
 #include <algorithm>
 #include <chrono>
@@ -36,9 +37,9 @@ constexpr int kRelaxChebyshev = 16;
 // Reuse of the hierarchy (the header), cg_amg's constants and measured choice.
 constexpr double kGrowth = 1.25;  // set up anew when iterations exceed this x the count after the last set-up
 constexpr int kMaxReuse = 25;     // ... or after this many solves
-
-// PCG's preconditioner set-up while the hierarchy is reused: nothing to do.
-HYPRE_Int keep_hierarchy(HYPRE_Solver, HYPRE_Matrix, HYPRE_Vector, HYPRE_Vector) { return 0; }
+// The preconditioner's matrix: the rows without their off-diagonal entries below this fraction of
+// the largest one (make_matrices), lumped into the diagonal. kDropBelow: see the header.
+constexpr double kDropBelow = 0.05;
 
 void check(HYPRE_Int err, const char* what) {
   if (err != 0) {
@@ -57,42 +58,193 @@ HYPRE_BigInt big(GlobalRow r) {
   return static_cast<HYPRE_BigInt>(r);
 }
 
-// The IJ objects of one solve, destroyed on every path out (the matrix unless a new hierarchy
-// keeps it).
-struct IjSystem {
-  HYPRE_IJMatrix A = nullptr;
-  HYPRE_IJVector b = nullptr, x = nullptr, r = nullptr;
-  HYPRE_Solver pcg = nullptr;
-  ~IjSystem() {
-    if (pcg) HYPRE_ParCSRPCGDestroy(pcg);
-    if (r) HYPRE_IJVectorDestroy(r);
-    if (x) HYPRE_IJVectorDestroy(x);
-    if (b) HYPRE_IJVectorDestroy(b);
-    if (A) HYPRE_IJMatrixDestroy(A);
+// A ParCSR matrix or vector, destroyed on every path out.
+struct Matrix {
+  hypre_ParCSRMatrix* A = nullptr;
+  Matrix() = default;
+  Matrix(const Matrix&) = delete;
+  Matrix& operator=(const Matrix&) = delete;
+  Matrix& operator=(Matrix&& o) noexcept {
+    std::swap(A, o.A);
+    return *this;
+  }
+  ~Matrix() {
+    if (A) hypre_ParCSRMatrixDestroy(A);
+  }
+  HYPRE_ParCSRMatrix handle() const { return reinterpret_cast<HYPRE_ParCSRMatrix>(A); }
+};
+struct Vector {
+  hypre_ParVector* v = nullptr;
+  Vector() = default;
+  Vector(const Vector&) = delete;
+  Vector& operator=(const Vector&) = delete;
+  ~Vector() {
+    if (v) hypre_ParVectorDestroy(v);
+  }
+  HYPRE_ParVector handle() const { return reinterpret_cast<HYPRE_ParVector>(v); }
+  double* data() const { return hypre_VectorData(hypre_ParVectorLocalVector(v)); }
+};
+struct Pcg {
+  HYPRE_Solver s = nullptr;
+  ~Pcg() {
+    if (s) HYPRE_ParCSRPCGDestroy(s);
   }
 };
 
-void make_vector(MPI_Comm comm, HYPRE_BigInt lo, HYPRE_BigInt hi, const std::vector<HYPRE_BigInt>& idx,
-                           const double* values, HYPRE_IJVector& v) {
-  check(HYPRE_IJVectorCreate(comm, lo, hi, &v), "IJVectorCreate");
-  check(HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR), "IJVectorSetObjectType");
-  check(HYPRE_IJVectorInitialize(v), "IJVectorInitialize");
-  if (!idx.empty())
-    check(HYPRE_IJVectorSetValues(v, static_cast<HYPRE_Int>(idx.size()), idx.data(), values), "IJVectorSetValues");
-  check(HYPRE_IJVectorAssemble(v), "IJVectorAssemble");
+// This rank's rows [lo, lo + n) of a matrix of `total` rows, and the vector over them with `values`.
+void make_vector(MPI_Comm comm, HYPRE_BigInt lo, std::size_t n, HYPRE_BigInt total, const double* values, Vector& out) {
+  HYPRE_BigInt part[2] = {lo, lo + static_cast<HYPRE_BigInt>(n)};
+  out.v = hypre_ParVectorCreate(comm, total, part);
+  check(hypre_ParVectorInitialize(out.v), "ParVectorInitialize");
+  std::copy(values, values + n, out.data());
+}
+
+// One ParCSR matrix being written: its row and column counts, then its arrays.
+struct Writer {
+  HYPRE_Int nnz_diag = 0, nnz_offd = 0;
+  std::vector<HYPRE_BigInt> offd_cols;  // global columns of the offd block, sorted and unique
+  HYPRE_Int *di = nullptr, *dj = nullptr, *oi = nullptr, *oj = nullptr;
+  double *dv = nullptr, *ov = nullptr;
+  HYPRE_Int d = 0, o = 0, at_diagonal = 0;
+  double diagonal = 0;
+
+  void create(MPI_Comm comm, HYPRE_BigInt lo, HYPRE_BigInt hi, HYPRE_BigInt total, Matrix& out) {
+    std::sort(offd_cols.begin(), offd_cols.end());
+    offd_cols.erase(std::unique(offd_cols.begin(), offd_cols.end()), offd_cols.end());
+    HYPRE_BigInt part[2] = {lo, hi};
+    out.A = hypre_ParCSRMatrixCreate(comm, total, total, part, part, static_cast<HYPRE_Int>(offd_cols.size()),
+                                     nnz_diag, nnz_offd);
+    check(hypre_ParCSRMatrixInitialize(out.A), "ParCSRMatrixInitialize");
+    hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(out.A);
+    hypre_CSRMatrix* offd = hypre_ParCSRMatrixOffd(out.A);
+    di = hypre_CSRMatrixI(diag);
+    dj = hypre_CSRMatrixJ(diag);
+    dv = hypre_CSRMatrixData(diag);
+    oi = hypre_CSRMatrixI(offd);
+    oj = hypre_CSRMatrixJ(offd);
+    ov = hypre_CSRMatrixData(offd);
+    std::copy(offd_cols.begin(), offd_cols.end(), hypre_ParCSRMatrixColMapOffd(out.A));
+  }
+  void begin_row(std::size_t a) {
+    di[a] = d;
+    oi[a] = o;
+    at_diagonal = d++;
+    diagonal = 0;
+  }
+  void end_row(std::size_t a) {
+    dj[at_diagonal] = static_cast<HYPRE_Int>(a);
+    dv[at_diagonal] = diagonal;
+  }
+  void add_diag(HYPRE_Int local, double v) {
+    dj[d] = local;
+    dv[d++] = v;
+  }
+  void add_offd(HYPRE_BigInt c, double v) {
+    oj[o] = static_cast<HYPRE_Int>(std::lower_bound(offd_cols.begin(), offd_cols.end(), c) - offd_cols.begin());
+    ov[o++] = v;
+  }
+  void finish(std::size_t n, Matrix& out) {
+    di[n] = d;
+    oi[n] = o;
+    check(hypre_ParCSRMatrixSetNumNonzeros(out.A), "ParCSRMatrixSetNumNonzeros");
+    check(hypre_MatvecCommPkgCreate(out.A), "MatvecCommPkgCreate");
+  }
+};
+
+// The rows as hypre's ParCSR matrices A (every entry) and M (the preconditioner's: off-diagonal
+// entries with |a_ij| < drop_below left out and added to the diagonal, so the row sums stay),
+// written in place: what HYPRE_IJMatrixAssemble would build, without its per-entry insertion, in
+// two passes over the rows for both. The "diag" block holds the columns of this rank's rows in
+// local numbers, each row's diagonal first (hypre's smoothers read it there), the "offd" block the
+// other ranks' columns, numbered by their place in the sorted list col_map_offd.
+void make_matrices(MPI_Comm comm, const LocalRows& rows, HYPRE_BigInt lo, double drop_below, Matrix& A, Matrix& M) {
+  const std::size_t n = rows.size();
+  const HYPRE_BigInt hi = lo + static_cast<HYPRE_BigInt>(n);  // one past this rank's last row
+  big(rows.range.total);  // every column below it fits hypre's index
+  Writer wa, wm;
+  wa.nnz_diag = wm.nnz_diag = static_cast<HYPRE_Int>(n);  // the diagonals
+  for (std::size_t a = 0; a < n; ++a) {
+    const GlobalRow row = lo + static_cast<GlobalRow>(a);
+    for (int k = rows.start[a]; k < rows.start[a + 1]; ++k) {
+      const GlobalRow c = rows.col[static_cast<std::size_t>(k)];
+      if (c == row) continue;
+      const bool kept = std::abs(rows.val[static_cast<std::size_t>(k)]) >= drop_below;
+      if (c >= lo && c < hi) {
+        ++wa.nnz_diag;
+        wm.nnz_diag += kept;
+      } else {
+        ++wa.nnz_offd;
+        wa.offd_cols.push_back(static_cast<HYPRE_BigInt>(c));
+        if (kept) {
+          ++wm.nnz_offd;
+          wm.offd_cols.push_back(static_cast<HYPRE_BigInt>(c));
+        }
+      }
+    }
+  }
+  const HYPRE_BigInt total = static_cast<HYPRE_BigInt>(rows.range.total);
+  wa.create(comm, lo, hi, total, A);
+  wm.create(comm, lo, hi, total, M);
+  for (std::size_t a = 0; a < n; ++a) {
+    const GlobalRow row = lo + static_cast<GlobalRow>(a);
+    wa.begin_row(a);
+    wm.begin_row(a);
+    for (int k = rows.start[a]; k < rows.start[a + 1]; ++k) {
+      const GlobalRow c = rows.col[static_cast<std::size_t>(k)];
+      const double v = rows.val[static_cast<std::size_t>(k)];
+      if (c == row) {
+        wa.diagonal += v;
+        wm.diagonal += v;
+        continue;
+      }
+      const bool kept = std::abs(v) >= drop_below;
+      if (c >= lo && c < hi) {
+        wa.add_diag(static_cast<HYPRE_Int>(c - lo), v);
+        if (kept) wm.add_diag(static_cast<HYPRE_Int>(c - lo), v);
+      } else {
+        wa.add_offd(static_cast<HYPRE_BigInt>(c), v);
+        if (kept) wm.add_offd(static_cast<HYPRE_BigInt>(c), v);
+      }
+      if (!kept) wm.diagonal += v;
+    }
+    wa.end_row(a);
+    wm.end_row(a);
+  }
+  wa.finish(n, A);
+  wm.finish(n, M);
 }
 
 }  // namespace
 
-// BoomerAMG set up on `A`, which it keeps (its finest level points at it until a solve passes another).
+// BoomerAMG set up on the preconditioner matrix `M` of one solve, which it keeps (its finest level
+// points at it until a solve passes another); `m_next`: the matrix the next V-cycles run on.
 struct HyprePoisson::Hierarchy {
   HYPRE_Solver amg = nullptr;
-  HYPRE_IJMatrix A = nullptr;
+  Matrix M;
+  hypre_ParCSRMatrix* m_next = nullptr;
+  bool set_up = false;  // whether PCG's preconditioner set-up builds the hierarchy
   ~Hierarchy() {
     if (amg) HYPRE_BoomerAMGDestroy(amg);
-    if (A) HYPRE_IJMatrixDestroy(A);
   }
 };
+
+namespace {
+
+// PCG's preconditioner: one V-cycle on the hierarchy's matrix of this solve (the sparsified rows),
+// whatever matrix PCG multiplies by (the full rows).
+HYPRE_Int vcycle(HYPRE_Solver solver, HYPRE_Matrix, HYPRE_Vector b, HYPRE_Vector x) {
+  auto* h = reinterpret_cast<HyprePoisson::Hierarchy*>(solver);
+  return HYPRE_BoomerAMGSolve(h->amg, reinterpret_cast<HYPRE_ParCSRMatrix>(h->m_next), reinterpret_cast<HYPRE_ParVector>(b),
+                              reinterpret_cast<HYPRE_ParVector>(x));
+}
+HYPRE_Int vcycle_setup(HYPRE_Solver solver, HYPRE_Matrix, HYPRE_Vector b, HYPRE_Vector x) {
+  auto* h = reinterpret_cast<HyprePoisson::Hierarchy*>(solver);
+  if (!h->set_up) return 0;
+  return HYPRE_BoomerAMGSetup(h->amg, reinterpret_cast<HYPRE_ParCSRMatrix>(h->m_next), reinterpret_cast<HYPRE_ParVector>(b),
+                              reinterpret_cast<HYPRE_ParVector>(x));
+}
+
+}  // namespace
 
 HyprePoisson::HyprePoisson(const parallel::Communicator& comm, double tolerance) : comm_(comm), tolerance_(tolerance) {
   static std::once_flag init;
@@ -106,7 +258,8 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
   const std::size_t n = rows.size();
   if (p.size() != n) p.assign(n, 0.0);
   HypreSolveReport rep;
-  // |b|^2 and whether any rank's row range changed since the set-up, in one all-reduce.
+  // |b|^2 and whether any rank's row range changed since the set-up, in one all-reduce; then the
+  // largest off-diagonal magnitude, the scale of the preconditioner's sparsification.
   std::vector<double> sums{0.0, 0.0};
   for (double v : rows.b) sums[0] += v * v;
   sums[1] = rows.range.first != first_ || rows.range.total != total_ || n != rows_ ? 1.0 : 0.0;
@@ -116,42 +269,23 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
     std::fill(p.begin(), p.end(), 0.0);
     return rep;
   }
+  double largest = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    for (int k = rows.start[a]; k < rows.start[a + 1]; ++k)
+      if (rows.col[static_cast<std::size_t>(k)] != rows.range.first + static_cast<GlobalRow>(a))
+        largest = std::max(largest, std::abs(rows.val[static_cast<std::size_t>(k)]));
+  largest = comm_.max(largest);
   const bool setup = !amg_ || must_setup_ || sums[1] > 0 || solves_since_setup_ >= kMaxReuse;
   const MPI_Comm comm = comm_.comm();
-  // Empty ranks own the empty range [first, first - 1].
-  const HYPRE_BigInt lo = big(rows.range.first), hi = big(rows.range.first + static_cast<GlobalRow>(n)) - 1;
-  std::vector<HYPRE_BigInt> idx(n), cols(rows.col.size());
-  std::vector<HYPRE_Int> ncols(n);
-  for (std::size_t a = 0; a < n; ++a) {
-    idx[a] = lo + static_cast<HYPRE_BigInt>(a);
-    ncols[a] = rows.start[a + 1] - rows.start[a];
-  }
-  for (std::size_t k = 0; k < cols.size(); ++k) cols[k] = big(rows.col[k]);
+  const HYPRE_BigInt lo = big(rows.range.first), total = big(rows.range.total);
 
-  IjSystem s;
-  check(HYPRE_IJMatrixCreate(comm, lo, hi, lo, hi, &s.A), "IJMatrixCreate");
-  check(HYPRE_IJMatrixSetObjectType(s.A, HYPRE_PARCSR), "IJMatrixSetObjectType");
-  {
-    std::vector<HYPRE_Int> diag(n, 0), offd(n, 0);  // preallocation: entries inside / outside the block
-    for (std::size_t a = 0; a < n; ++a)
-      for (int k = rows.start[a]; k < rows.start[a + 1]; ++k)
-        ++((cols[static_cast<std::size_t>(k)] >= lo && cols[static_cast<std::size_t>(k)] <= hi) ? diag : offd)[a];
-    if (n > 0) check(HYPRE_IJMatrixSetDiagOffdSizes(s.A, diag.data(), offd.data()), "IJMatrixSetDiagOffdSizes");
-  }
-  check(HYPRE_IJMatrixInitialize(s.A), "IJMatrixInitialize");
-  if (n > 0)
-    check(HYPRE_IJMatrixSetValues(s.A, static_cast<HYPRE_Int>(n), ncols.data(), idx.data(), cols.data(), rows.val.data()),
-          "IJMatrixSetValues");
-  check(HYPRE_IJMatrixAssemble(s.A), "IJMatrixAssemble");
-  make_vector(comm, lo, hi, idx, rows.b.data(), s.b);
-  make_vector(comm, lo, hi, idx, p.data(), s.x);
-  HYPRE_ParCSRMatrix A = nullptr;
-  HYPRE_ParVector b = nullptr, x = nullptr;
-  check(HYPRE_IJMatrixGetObject(s.A, reinterpret_cast<void**>(&A)), "IJMatrixGetObject");
-  check(HYPRE_IJVectorGetObject(s.b, reinterpret_cast<void**>(&b)), "IJVectorGetObject");
-  check(HYPRE_IJVectorGetObject(s.x, reinterpret_cast<void**>(&x)), "IJVectorGetObject");
+  Matrix A, M;
+  make_matrices(comm, rows, lo, kDropBelow * largest, A, M);
+  Vector b, x;
+  make_vector(comm, lo, n, total, rows.b.data(), b);
+  make_vector(comm, lo, n, total, p.data(), x);
 
-  if (setup) {  // a new hierarchy, which keeps this solve's matrix
+  if (setup) {  // a new hierarchy, which keeps this solve's preconditioner matrix
     amg_.reset();
     auto h = std::make_unique<Hierarchy>();
     check(HYPRE_BoomerAMGCreate(&h->amg), "BoomerAMGCreate");
@@ -164,8 +298,8 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
     HYPRE_BoomerAMGSetNumSweeps(h->amg, 1);
     HYPRE_BoomerAMGSetTol(h->amg, 0.0);  // preconditioner: exactly one V-cycle
     HYPRE_BoomerAMGSetMaxIter(h->amg, 1);
-    h->A = s.A;
-    s.A = nullptr;
+    h->M = std::move(M);
+    h->m_next = h->M.A;
     amg_ = std::move(h);
     first_ = rows.range.first;
     total_ = rows.range.total;
@@ -174,27 +308,30 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
     solves_since_setup_ = 0;
     baseline_ = -1;
     ++setups_;
+  } else {
+    amg_->m_next = M.A;
   }
+  amg_->set_up = setup;
   rep.refactored_symbolic = setup;
 
-  check(HYPRE_ParCSRPCGCreate(comm, &s.pcg), "ParCSRPCGCreate");
+  Pcg pcg;
+  check(HYPRE_ParCSRPCGCreate(comm, &pcg.s), "ParCSRPCGCreate");
   const GlobalRow max_it = std::max<GlobalRow>(200, rows.range.total);  // as cg_amg
-  HYPRE_PCGSetMaxIter(s.pcg, static_cast<HYPRE_Int>(std::min<GlobalRow>(max_it, std::numeric_limits<HYPRE_Int>::max())));
-  HYPRE_PCGSetTol(s.pcg, tolerance_);
-  HYPRE_PCGSetAbsoluteTol(s.pcg, 0.0);
-  HYPRE_PCGSetTwoNorm(s.pcg, 1);  // |r|_2 / |b|_2, the one-process solvers' test
-  HYPRE_PCGSetPrintLevel(s.pcg, 0);
-  HYPRE_PCGSetLogging(s.pcg, 0);
-  HYPRE_PCGSetPrecond(s.pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
-                      setup ? reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup) : keep_hierarchy, amg_->amg);
-  check(HYPRE_ParCSRPCGSetup(s.pcg, A, b, x), "PCG setup");
+  HYPRE_PCGSetMaxIter(pcg.s, static_cast<HYPRE_Int>(std::min<GlobalRow>(max_it, std::numeric_limits<HYPRE_Int>::max())));
+  HYPRE_PCGSetTol(pcg.s, tolerance_);
+  HYPRE_PCGSetAbsoluteTol(pcg.s, 0.0);
+  HYPRE_PCGSetTwoNorm(pcg.s, 1);  // |r|_2 / |b|_2, the one-process solvers' test
+  HYPRE_PCGSetPrintLevel(pcg.s, 0);
+  HYPRE_PCGSetLogging(pcg.s, 0);
+  HYPRE_PCGSetPrecond(pcg.s, vcycle, vcycle_setup, reinterpret_cast<HYPRE_Solver>(amg_.get()));
+  check(HYPRE_ParCSRPCGSetup(pcg.s, A.handle(), b.handle(), x.handle()), "PCG setup");
   must_setup_ = false;
   rep.setup_seconds = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  const HYPRE_Int solved = HYPRE_ParCSRPCGSolve(s.pcg, A, b, x);
+  const HYPRE_Int solved = HYPRE_ParCSRPCGSolve(pcg.s, A.handle(), b.handle(), x.handle());
   rep.solve_seconds = seconds_since(t1);
   HYPRE_Int it = 0;
-  HYPRE_PCGGetNumIterations(s.pcg, &it);
+  HYPRE_PCGGetNumIterations(pcg.s, &it);
   rep.iterations = it;
   ++solves_since_setup_;
   if (baseline_ < 0)
@@ -203,15 +340,13 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
     must_setup_ = true;
   if (solved != 0 && !HYPRE_CheckError(solved, HYPRE_ERROR_CONV)) check(solved, "PCG solve");
   HYPRE_ClearAllErrors();
-  if (n > 0) check(HYPRE_IJVectorGetValues(s.x, static_cast<HYPRE_Int>(n), idx.data(), p.data()), "IJVectorGetValues");
+  std::copy(x.data(), x.data() + n, p.begin());
+  amg_->m_next = amg_->M.A;  // this solve's preconditioner matrix goes with it
 
   // True residual |b - A p| / |b| (the recursive one drifts by round-off), as cg_amg reports it.
-  make_vector(comm, lo, hi, idx, rows.b.data(), s.r);
-  HYPRE_ParVector r = nullptr;
-  check(HYPRE_IJVectorGetObject(s.r, reinterpret_cast<void**>(&r)), "IJVectorGetObject");
-  check(HYPRE_ParCSRMatrixMatvec(-1.0, A, x, 1.0, r), "ParCSRMatrixMatvec");
+  check(HYPRE_ParCSRMatrixMatvec(-1.0, A.handle(), x.handle(), 1.0, b.handle()), "ParCSRMatrixMatvec");
   double rr = 0;
-  check(HYPRE_ParVectorInnerProd(r, r, &rr), "ParVectorInnerProd");
+  check(HYPRE_ParVectorInnerProd(b.handle(), b.handle(), &rr), "ParVectorInnerProd");
   rep.relative_residual = std::sqrt(rr / nb2);
   return rep;
 }

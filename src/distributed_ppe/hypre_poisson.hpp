@@ -1,9 +1,21 @@
 // The distributed pressure Poisson solve: the rows of all ranks (ppe_rows.hpp) as one hypre ParCSR
-// matrix (HYPRE_IJMatrix, each rank its contiguous block of rows), solved by conjugate gradients
+// matrix (each rank its contiguous block of rows, written in place), solved by conjugate gradients
 // (hypre PCG) preconditioned by one BoomerAMG V-cycle (classical AMG, Ruge & Stueben 1987; HMIS
 // coarsening and extended+i interpolation, De Sterck, Yang & Heys 2006, as hypre recommends for 2D
 // and 3D problems on several ranks; Chebyshev smoothing, hypre_poisson.cpp). The matrix is the one-process "cg_amg"/"klu" matrix, symmetric
 // positive definite with the pinned unknown.
+//
+// The preconditioner's matrix is sparser than the one PCG solves. The rows of the kernel's Laplacian
+// (C&R eq. 19) couple a particle to some 45 neighbours out to the support 2h, but the coefficient
+// falls as (1 - q/2)^3 for the Wendland C2 kernel: on a square lattice at h = 2 dx the 20 neighbours
+// at r >= 1.5 h carry 3 % of the diagonal. Every pass of the V-cycle over the finest level (Chebyshev smoothing before and after,
+// the residual) streams the matrix from memory, so the hierarchy is set up on, and the V-cycle runs
+// on, the rows without the off-diagonal entries below kDropBelow (0.05) of the largest one over all
+// ranks, each dropped entry added to its row's diagonal (the row sums, and so the Laplacian's
+// constant null vector away from the pinned row, stay). The rule reads only |a_ij| and a global
+// scale, so the sparsified matrix is symmetric as the rows are, and it stays diagonally dominant:
+// a symmetric positive definite V-cycle, PCG's requirement. PCG multiplies by the full rows, so the
+// solution and its stopping test are those of the full matrix. bench/RESULTS.md compares the two.
 //
 // Stopping test: |b - A p|_2 <= tolerance |b|_2 (PCG on the two-norm of the residual, not the
 // preconditioned one), the test of the one-process iterative solvers with the same tolerance
@@ -45,13 +57,14 @@ class HyprePoisson {
   // limit (max(200, rows), as cg_amg) returns with its residual in the report, as cg_amg does.
   // rep.refactored_symbolic: BoomerAMG was set up for this solve.
   HypreSolveReport solve(const LocalRows& rows, std::vector<double>& p);
+  // BoomerAMG and the matrix it was set up on (public for PCG's preconditioner call-back).
+  struct Hierarchy;
   // The next solve sets BoomerAMG up anew (call it on every rank).
   void invalidate() { must_setup_ = true; }
   // hypre's set-ups so far.
   long setups() const { return setups_; }
 
  private:
-  struct Hierarchy;  // BoomerAMG and the matrix it was set up on
   const parallel::Communicator& comm_;
   double tolerance_;
   std::unique_ptr<Hierarchy> amg_;

@@ -142,6 +142,45 @@ CsrRef csr_view(const SparseMatrix& S) {
   return {static_cast<int>(S.rows()), S.outerIndexPtr(), S.innerIndexPtr(), S.valuePtr()};
 }
 
+void sparsify(const CsrRef& A, double fraction, CsrOwned& out) {
+  double largest = 0;
+  for (int i = 0; i < A.n; ++i)
+    for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
+      if (A.col[k] != i) largest = std::max(largest, std::abs(A.val[k]));
+  const double drop = fraction * largest;
+  out.n = A.n;
+  out.ptr.assign(static_cast<std::size_t>(A.n) + 1, 0);
+  out.col.clear();
+  out.val.clear();
+  out.col.reserve(static_cast<std::size_t>(A.ptr[A.n]));
+  out.val.reserve(static_cast<std::size_t>(A.ptr[A.n]));
+  for (int i = 0; i < A.n; ++i) {
+    std::size_t at_diagonal = out.col.size();
+    double lumped = 0;
+    bool has_diagonal = false;
+    for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k) {
+      if (A.col[k] != i && std::abs(A.val[k]) < drop) {
+        lumped += A.val[k];
+        continue;
+      }
+      if (A.col[k] == i) {
+        at_diagonal = out.col.size();
+        has_diagonal = true;
+      }
+      out.col.push_back(A.col[k]);
+      out.val.push_back(A.val[k]);
+    }
+    if (!has_diagonal && lumped != 0) {  // a row without a stored diagonal: keep the sorted order
+      const auto pos = std::lower_bound(out.col.begin() + out.ptr[static_cast<std::size_t>(i)], out.col.end(), i);
+      at_diagonal = static_cast<std::size_t>(pos - out.col.begin());
+      out.col.insert(pos, i);
+      out.val.insert(out.val.begin() + static_cast<std::ptrdiff_t>(at_diagonal), 0.0);
+    }
+    if (lumped != 0) out.val[at_diagonal] += lumped;
+    out.ptr[static_cast<std::size_t>(i) + 1] = static_cast<int>(out.col.size());
+  }
+}
+
 long AmgHierarchy::nonzeros(int level) const { return op(level).ptr[size(level)]; }
 
 void AmgHierarchy::setup(const CsrRef& A) {

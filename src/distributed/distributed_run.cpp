@@ -108,9 +108,8 @@ void check_distributable(const Scene& scene, int ranks) {
     if (scene.ppe_operator != PpeOperator::approximate)
       throw InputError(scene.source + ": method.ppe_operator = " + projection_options().ppe_operator.name(scene.ppe_operator) + on);
   }
-  // time.imex: ARKStep with the Krylov solve (distributed/halo_viscous_split.hpp), without a
-  // projection (the constrained one's f_E over the ranks is not wired to the split).
-  if (scene.imex && traits.projection) throw InputError(scene.source + ": time.imex under scheme " + scene.scheme + on);
+  // time.imex: ARKStep with the Krylov solve (distributed/halo_viscous_split.hpp); a projection
+  // is inside f_E there (the scene reader admits time.imex only with one).
   if (scene.dimension != 2)
     throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
 }
@@ -369,7 +368,14 @@ void RankProcess::start_integrator(double t, double h, const StepStats& counters
   }
   eo_.initial_dt = h > 0 ? h : stable(y.data());
   if (scene_.imex) {  // after the evaluation above, whose acceleration is the whole f's, as one process's at t = 0
-    if (!split_) split_.emplace(scene_, *f_, *mine_, comm_);
+    if (!split_) {
+      split_.emplace(scene_, *f_, *mine_, comm_);
+      if (projection_ && projection_->constrained())  // the constrained projection inside f_E
+        split_->set_constraint([this](const double* yy, double* fe, const double* au, const double* av) {
+          projection_->constrain(yy, fe, au, av);
+          pressure_ids_ = mine_->ids();
+        });
+    }
     split_->forget();
     ImexOptions io = imex_options(scene_, eo_);
     io.krylov_eps_lin = kKrylovEpsLin;

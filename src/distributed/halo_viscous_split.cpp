@@ -32,6 +32,10 @@ void HaloViscousSplit::evaluate_at(double t, const double* y) {
   fi_.resize(N);
   f_.eval(t, y, fe_.data());
   f_.implicit_part(fi_.data());
+  if (constraint_) {
+    const StateLayout L = mine_.layout();
+    constraint_(y, fe_.data(), fi_.data() + L.vel(0), fi_.data() + L.vel(1));
+  }
   y_.assign(y, y + N);
   t_ = t;
   builds_ = f_.builds();

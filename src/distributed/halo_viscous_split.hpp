@@ -17,6 +17,7 @@
 // evaluation serves is agreed by the ranks (each evaluation is collective).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/scene.hpp"
@@ -37,6 +38,14 @@ class HaloViscousSplit {
   void times(const double* v, double* Jv);
   void diagonal(double* d);
   ImexFunctions functions();
+  // A constraint on f_E that must see the whole acceleration (the constrained projection over the
+  // ranks), as ViscousSplit::set_constraint: called after each full evaluation with the rank's f_E
+  // and f_I's acceleration of the rank's particles. Collective, like the evaluation.
+  using Constraint = std::function<void(const double* y, double* fe, const double* au, const double* av)>;
+  void set_constraint(Constraint c) {
+    constraint_ = std::move(c);
+    valid_ = false;
+  }
   // Drops the cached evaluation (the particles migrated or were dealt anew).
   void forget() { valid_ = false; }
 
@@ -46,6 +55,7 @@ class HaloViscousSplit {
   bool cached(const double* y) const;  // collective
   void evaluate_at(double t, const double* y);
   HaloRhs& f_;
+  Constraint constraint_;
   const RankParticles& mine_;
   const parallel::Communicator& comm_;
   double radius_ = 0;  // R_dep

@@ -12,7 +12,7 @@ Taylor-Green vortex (25 x 25) on 2 and 3 ranks against the one-process run:
   - summary.json "mpi": {"ranks": P} (and {"ranks": 1} for one process);
   - with method.reorder_every = 5 the particles migrate (summary mpi.migrations > 0) and the
     results still agree;
-  - a scene or option not run over several ranks (a 1D domain, time.imex under isph) exits 2 on every rank with
+  - a scene or option not run over several ranks (a 1D domain, the orthogonal projection) exits 2 on every rank with
     one message from rank 0 (the isph runs and their refusals: check_distributed_isph.py;
     checkpoints and restarts: check_distributed_restart.py);
   - a right-hand side that turns NaN on the particles of one rank (a body force NaN for x > 0.8
@@ -160,8 +160,8 @@ compare("rayleigh_taylor_wcsph", [os.path.join(source, "cases/rayleigh_taylor/sc
 compare("poiseuille", [os.path.join(source, "cases/poiseuille/scene.toml"), "--set", "output.every=0.025"] + short)
 
 for what, args in [("dimension 1", [os.path.join(source, "cases/hydrostatic_1d/scene.toml")]),
-                   ("time.imex under isph", [vortex, "--set", "time.imex=true", "--set", "method.scheme=isph",
-                                             "--set", "method.projection=constrained"])]:
+                   ("the orthogonal projection", [vortex, "--set", "method.scheme=isph",
+                                                  "--set", "method.projection=orthogonal"])]:
     # Every attempt must exit 2. mpirun's output forwarding can lose the one line when all ranks end
     # at once (seen once in a clean build), so the message is looked for in up to three attempts.
     for attempt in range(3):

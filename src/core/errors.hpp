@@ -22,6 +22,14 @@ struct OutputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A message on one line (the exit-code contract): line breaks, from a multi-line TOML string or an
+// expression, become spaces.
+inline std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
 // A value as echoed in a message: one line, at most about 200 characters. A longer text is cut
 // (never inside a UTF-8 character) and ends in "… (N characters)", so that a 1 MB value or a huge
 // expression does not flood stderr.

@@ -27,13 +27,6 @@ std::string list_names(const std::vector<std::string>& names) {
   return out.empty() ? "none" : out;
 }
 
-// Messages are one line (exit-code contract): a multi-line TOML string must not break them.
-std::string one_line(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  std::replace(s.begin(), s.end(), '\r', ' ');
-  return s;
-}
-
 std::string describe(const std::string& text, const mu::ParserError& e,
                      const std::vector<std::string>& variables) {
   std::string reason;

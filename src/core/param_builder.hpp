@@ -5,6 +5,7 @@
 // A parameter is stored in a Scene member (`.to(&Scene::h_over_dx)`) or, by default, in the scene's
 // table of part parameters, where the part reads it back with part_param<T>(scene, key).
 #pragma once
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -80,6 +81,21 @@ class ParamBuilder {
     const Option<E>* o = &option;  // the options are static objects (core/option.hpp)
     p_.store = [member, o](Scene& s, const ParamValue& v) { s.*member = o->at(std::get<std::string>(v)); };
     p_.load = [member, o](const Scene& s) { return ParamValue(o->name(s.*member)); };
+    return *this;
+  }
+  // A member that holds a closed option with an "auto" rule (automatic): empty while the value is
+  // "auto", the enumerator once the rule (or the scene) has chosen; written back as "auto" or the name.
+  template <class E>
+  ParamBuilder& to(std::optional<E> Scene::*member, const Option<E>& option) {
+    const Option<E>* o = &option;
+    p_.store = [member, o](Scene& s, const ParamValue& v) {
+      const std::string& name = std::get<std::string>(v);
+      s.*member = name == "auto" ? std::optional<E>() : std::optional<E>(o->at(name));
+    };
+    p_.load = [member, o](const Scene& s) {
+      const std::optional<E>& e = s.*member;
+      return ParamValue(e ? o->name(*e) : std::string("auto"));
+    };
     return *this;
   }
   ParamBuilder& to_table() {

@@ -12,12 +12,13 @@
 //
 // A key with a closed list of values (an Option, core/option.hpp) is held as its enumerator
 // (core/option_values.hpp, core/projection_method.hpp): parsed once by the reader, written back as
-// its name. Text stays for the keys that select a registered part (open lists, resolved through
-// their registry), and for the closed options with an "auto" rule (method.ppe_divergence,
-// method.ppe_pressure_level, method.body_force_pressure), which hold "auto" while the rules run
-// (io/scene_defaults.cpp).
+// its name; one with an "auto" rule (method.ppe_divergence, method.ppe_pressure_level,
+// method.body_force_pressure) as a std::optional of it, empty while the rules run
+// (io/scene_defaults.cpp). Text stays for the keys that select a registered part (open lists,
+// resolved through their registry).
 #pragma once
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,9 @@ namespace arksph {
 
 enum class SideKind { wall, periodic };
 enum class SlipKind { no_slip, free_slip };
+
+// The scene's names of the sides, in the order of Scene::sides.
+inline constexpr const char* kSideNames[4] = {"left", "right", "bottom", "top"};
 
 // One side of the box: left, right, bottom, top (index 0..3; 1D uses left, right only).
 struct SideSpec {
@@ -57,7 +61,7 @@ struct Scene {
   // [domain]
   std::array<double, 2> min{0, 0}, max{1, 1};
 
-  // [boundary] left, right, bottom, top
+  // [boundary] left, right, bottom, top (kSideNames)
   std::array<SideSpec, 4> sides{};
   double corner_alpha;  // Szewc et al. 2012 eq. 46, range [-1, 1]
   bool free_slip_divergence;  // Szewc §6: free-slip images for the velocity divergence only
@@ -106,12 +110,12 @@ struct Scene {
   bool pressure_in_f() const { return projection != ProjectionMethod::cummins_rudman; }
   double constraint_relaxation;  // constrained projection: alpha = this x U/h, the decay rate of D u
   PpeOperator ppe_operator;  // isph: "approximate" (C&R eq. 19) | "exact" (C&R eq. 18)
-  std::string ppe_divergence;  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
-  std::string ppe_pressure_level;  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)
+  std::optional<PpeDivergence> ppe_divergence;  // isph source: "cummins_rudman" (C&R eq. 17) | "difference"
+  std::optional<PressureLevel> ppe_pressure_level;  // isph: "zero_mean" | "zero_min" (P >= 0, no tensile pairs)
   bool force_sweep;  // the per-particle force terms share one neighbourhood gather
   NeighborStorage neighbor_storage;  // "pairs" (W, F stored) | "candidates" (kernel on the fly)
   double ppe_pressure_offset;  // isph: constant added to P after the level (background pressure)
-  std::string body_force_pressure;  // isph: "modified" (P = p - rho0 g . r) | "split" (rhs/pressure_gravity.hpp)
+  std::optional<BodyForcePressure> body_force_pressure;  // isph: "modified" (P = p - rho0 g . r) | "split" (rhs/pressure_gravity.hpp)
   std::string ppe_solver;  // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (docs/methods/isph.md)
   double ppe_tolerance;  // isph, cg: relative residual
   double gpps_spacing;  // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing

@@ -39,14 +39,7 @@ using scene_schema::format_number;
 using scene_schema::Reporter;
 using scene_schema::Section;
 
-const char* const kSideNames[4] = {"left", "right", "bottom", "top"};
 const char* const kAxis[2] = {"x", "y"};
-
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
 
 std::string trim(const std::string& s) {
   auto b = s.find_first_not_of(" \t");

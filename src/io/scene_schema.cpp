@@ -45,12 +45,6 @@ bool starts_with_component(const std::string& longer, const std::string& prefix)
   return longer[prefix.size()] == '.' || longer[prefix.size()] == '[';
 }
 
-std::string one_line(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  std::replace(s.begin(), s.end(), '\r', ' ');
-  return s;
-}
-
 // The value of a TOML number as a double; an integer that a double cannot hold exactly (beyond 2^53)
 // is refused with its digits, since rounding it would change the value written.
 double number_of(const toml::node& n, const Reporter& rep, const std::string& key) {

@@ -70,7 +70,6 @@ std::string comment(const Param& p) {
   return c;
 }
 
-const char* const kSideNames[4] = {"left", "right", "bottom", "top"};
 
 std::string side_text(const Scene& s, int i) {
   const SideSpec& side = s.sides[i];

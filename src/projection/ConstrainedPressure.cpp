@@ -74,7 +74,7 @@ ConstrainedPressure::ConstrainedPressure(const Scene& scene, ParticleDomain& dom
     : domain_(domain),
       split_(scene),
       relaxation_(relaxation_rate(scene, flow_rate)),
-      zero_min_level_(projection_options().ppe_pressure_level.at(scene.ppe_pressure_level) == PressureLevel::zero_min),
+      zero_min_level_(scene.ppe_pressure_level.value() == PressureLevel::zero_min),
       poisson_(domain.poisson(scene, false)),
       free_surface_(!scene.fluid_region.empty()),
       surface_threshold_(free_surface_threshold(scene.dimension)),

@@ -75,18 +75,18 @@ const std::vector<Param>& projection_params() {
       choice("method.ppe_divergence", "auto").choices(projection_options().ppe_divergence.names())
           .doc("source of the PPE: C&R eq. 17 without ghosts, or the difference form of Szewc et al. 2012 eq. 19 / rho with ghosts; "
                "auto: difference for isph-gpps and below a free surface (fluid.region), cummins_rudman otherwise")
-          .automatic(automatic_ppe_divergence).to(&Scene::ppe_divergence),
+          .automatic(automatic_ppe_divergence).to(&Scene::ppe_divergence, projection_options().ppe_divergence),
       choice("method.ppe_pressure_level", "auto").choices(projection_options().ppe_pressure_level.names())
           .doc("free level of P of the Neumann problem: zero mean, or zero minimum (P >= 0, so C&R eq. 11 never attracts); "
                "auto: zero_min")
-          .automatic(automatic_ppe_pressure_level).to(&Scene::ppe_pressure_level),
+          .automatic(automatic_ppe_pressure_level).to(&Scene::ppe_pressure_level, projection_options().ppe_pressure_level),
       number("method.ppe_pressure_offset", 0.0).in(at_least(0))
           .doc("constant added to P after the level (a background pressure)").to(&Scene::ppe_pressure_offset),
       choice("method.body_force_pressure", "auto").choices(body_force_pressures().names())
           .doc("a constant body force g along walled axes: modified: the pressure equation solves for P = p - rho0 g . r "
                "(one density; a tank at rest stays exactly at rest); split: g in the momentum equation, its wall flux as "
                "the pressure's Neumann data (C&R's p); auto: modified where it applies, split otherwise")
-          .automatic(automatic_body_force_pressure).to(&Scene::body_force_pressure),
+          .automatic(automatic_body_force_pressure).to(&Scene::body_force_pressure, body_force_pressures()),
   };
   return params;
 }
@@ -107,8 +107,8 @@ Projection::Projection(const Scene& scene, std::unique_ptr<ParticleDomain> domai
       split_(scene),
       centre_positions_(scene.centre_positions),
       exact_operator_(scene.ppe_operator == PpeOperator::exact),
-      difference_divergence_(projection_options().ppe_divergence.at(scene.ppe_divergence) == PpeDivergence::difference),
-      zero_min_level_(projection_options().ppe_pressure_level.at(scene.ppe_pressure_level) == PressureLevel::zero_min),
+      difference_divergence_(scene.ppe_divergence.value() == PpeDivergence::difference),
+      zero_min_level_(scene.ppe_pressure_level.value() == PressureLevel::zero_min),
       free_surface_(!scene.fluid_region.empty()),
       surface_threshold_(free_surface_threshold(scene.dimension)),
       surface_depth_(0.5 * scene.spacing),

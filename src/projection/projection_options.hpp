@@ -2,12 +2,9 @@
 // these values as their choices).
 #pragma once
 #include "core/option.hpp"
-#include "core/option_values.hpp"  // PpeOperator, ProjectionPoints (Scene members)
+#include "core/option_values.hpp"  // the enumerators (Scene members)
 
 namespace arksph {
-
-enum class PpeDivergence { cummins_rudman, difference };   // its source: C&R eq. 17 or Szewc et al. 2012 eq. 19
-enum class PressureLevel { zero_mean, zero_min };          // the free level of P of the Neumann problem
 
 struct ProjectionOptions {
   Option<PpeOperator> ppe_operator;            // method.ppe_operator

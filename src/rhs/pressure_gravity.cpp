@@ -43,7 +43,7 @@ const Option<BodyForcePressure>& body_force_pressures() {
 bool modified_pressure_applies(const Scene& scene) { return walled_constant_force(scene).active; }
 
 PressureGravity pressure_gravity(const Scene& scene) {
-  if (body_force_pressures().at(scene.body_force_pressure) != BodyForcePressure::modified) return {};
+  if (scene.body_force_pressure.value() != BodyForcePressure::modified) return {};
   const PressureGravity out = walled_constant_force(scene);
   if (!out.active)
     throw InputError(scene.source + ": method.body_force_pressure = \"modified\" needs a projection scheme, one fluid "

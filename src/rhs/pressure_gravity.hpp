@@ -31,7 +31,6 @@ namespace arksph {
 
 // method.body_force_pressure: the body force in the pressure (modified) or in the momentum equation
 // (split); the key is declared with the projection's keys (projection/projection.cpp).
-enum class BodyForcePressure { modified, split };
 const Option<BodyForcePressure>& body_force_pressures();
 
 struct PressureGravity {

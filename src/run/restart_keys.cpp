@@ -48,9 +48,8 @@ void check_restart_keys(const Scene& a, const Scene& b, const std::string& sourc
   same("fluid.region", text(a.fluid_region), text(b.fluid_region));
   same("fluid.shuffle_initial_order", text(a.shuffle_initial_order), text(b.shuffle_initial_order));
   same("initial.offset", text(a.initial_offset, dim), text(b.initial_offset, dim));
-  static const char* const side_names[4] = {"left", "right", "bottom", "top"};
   for (int s = 0; s < (dim == 1 ? 2 : 4); ++s) {
-    const std::string key = std::string("boundary.") + side_names[s];
+    const std::string key = std::string("boundary.") + kSideNames[s];
     same(key + ".kind", text(a.sides[s].kind), text(b.sides[s].kind));
     same(key + ".slip", text(a.sides[s].slip), text(b.sides[s].slip));
   }

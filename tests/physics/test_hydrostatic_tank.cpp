@@ -205,7 +205,7 @@ TEST_CASE("hydrostatic tank: with the modified pressure every projection holds a
 TEST_CASE("hydrostatic tank: the modified pressure reports the hydrostatic p") {
   std::ostringstream warnings;
   const Scene scene = read_scene_text(kTank, "tank", {}, warnings);
-  REQUIRE(scene.body_force_pressure == "modified");
+  REQUIRE(scene.body_force_pressure == BodyForcePressure::modified);
   Model model = build_model(scene);
   std::vector<double> y0;
   const std::vector<double> y1 = testing::one_projected_step(scene, model, y0);

@@ -91,15 +91,15 @@ TEST_CASE("auto: density_mode is summation for wcsph with phases, else continuit
 
 TEST_CASE("auto: the PPE pressure level is zero_min for every projection") {
   for (const std::string& text : {kWalled, kPeriodic}) {
-    CHECK(read(text, {"method.scheme=isph"}).ppe_pressure_level == "zero_min");
-    CHECK(read(text, {"method.scheme=isph-gpps"}).ppe_pressure_level == "zero_min");
-    CHECK(read(text, {"method.scheme=isph", "method.projection=constrained"}).ppe_pressure_level == "zero_min");
+    CHECK(read(text, {"method.scheme=isph"}).ppe_pressure_level == PressureLevel::zero_min);
+    CHECK(read(text, {"method.scheme=isph-gpps"}).ppe_pressure_level == PressureLevel::zero_min);
+    CHECK(read(text, {"method.scheme=isph", "method.projection=constrained"}).ppe_pressure_level == PressureLevel::zero_min);
   }
 }
 
 TEST_CASE("auto: the PPE source is C&R eq. 17 on the particles, the difference form on the grid") {
-  CHECK(read(kWalled, {"method.scheme=isph"}).ppe_divergence == "cummins_rudman");
-  CHECK(read(kWalled, {"method.scheme=isph-gpps"}).ppe_divergence == "difference");
+  CHECK(read(kWalled, {"method.scheme=isph"}).ppe_divergence == PpeDivergence::cummins_rudman);
+  CHECK(read(kWalled, {"method.scheme=isph-gpps"}).ppe_divergence == PpeDivergence::difference);
 }
 
 TEST_CASE("auto: the correction solver") {
@@ -135,8 +135,8 @@ TEST_CASE("auto: an explicit value is used as given and not listed as chosen") {
                                           "method.ppe_pressure_level=zero_mean", "method.ppe_divergence=difference",
                                           "method.correction_solver=kinsol"});
   CHECK(s.density_mode == "continuity");
-  CHECK(s.ppe_pressure_level == "zero_mean");
-  CHECK(s.ppe_divergence == "difference");
+  CHECK(s.ppe_pressure_level == PressureLevel::zero_mean);
+  CHECK(s.ppe_divergence == PpeDivergence::difference);
   CHECK(s.correction_solver == "kinsol");
   for (const auto& [key, value] : s.automatic) {
     CAPTURE(key);

@@ -61,6 +61,13 @@ inline std::string slurp(const std::string& path) {
   return ss.str();
 }
 
+// The number of lines of a text (its newlines): one-line messages are a contract (exit codes).
+inline int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
 // The text of the scene file tests/scenes/<name> (scenes shared by several test files).
 inline std::string test_scene(const std::string& name) {
   const std::string path = std::string(ARKSPH_SOURCE_DIR) + "/tests/scenes/" + name;

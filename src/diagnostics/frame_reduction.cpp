@@ -19,7 +19,6 @@ enum Sum { kKinetic, kDeviation2, kRatio, kDensity, kInitial, kCount, kDivergenc
 enum Max { kSpeed, kPeak, kPeakExact, kMaxima };
 
 double lid_speed(const Scene& s) { return std::hypot(s.sides[3].velocity[0], s.sides[3].velocity[1]); }
-double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 // The Poiseuille half-width and centre of the scene's channel.
 double half_width(const Scene& s) { return 0.5 * (s.max[1] - s.min[1]); }
 double centre(const Scene& s) { return 0.5 * (s.max[1] + s.min[1]); }
@@ -90,7 +89,7 @@ void FrameReduction::add(const FrameParticles& p, const std::function<bool(doubl
     for (int k = 0; k < 3; ++k) sums_[ghia_at_ + 3 * i + static_cast<std::size_t>(k)] += s[static_cast<std::size_t>(k)];
   }
   if (scene_.poiseuille && f.t > 0) {
-    const double d = half_width(scene_), yc = centre(scene_), g = constant_force_x(scene_);
+    const double d = half_width(scene_), yc = centre(scene_), g = poiseuille_force(scene_);
     for (std::size_t a = 0; a < n; ++a) {
       const double exact = poiseuille_velocity(f.y[a] - yc, f.t, d, scene_.viscosity, g);
       const double rel = (f.u[a] - exact) / exact;

@@ -4,6 +4,8 @@
 #include <limits>
 #include <numbers>
 
+#include "core/expression.hpp"
+
 namespace arksph {
 
 double poiseuille_velocity(double y, double t, double d, double nu, double force) {
@@ -34,5 +36,7 @@ double poiseuille_epsilon(const FluidFields& f, double y_lo, double y_hi, double
   }
   return std::sqrt(sum / static_cast<double>(f.n_real));
 }
+
+double poiseuille_force(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 
 }  // namespace arksph

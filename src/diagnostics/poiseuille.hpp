@@ -1,5 +1,6 @@
 // Start-up Poiseuille flow, Basa, Quinlan & Lastiwka 2008 §6.1.
 #pragma once
+#include "core/scene.hpp"
 #include "rhs/fluid_fields.hpp"
 
 namespace arksph {
@@ -16,5 +17,8 @@ double poiseuille_tstar(double t, double d, double nu);
 // Basa eq. 38: eps = sqrt(1/N sum_a ((u_a - U(y_a,t)) / U(y_a,t))^2) over fluid particles,
 // walls at y_lo and y_hi. Returns NaN at t = 0 where U vanishes.
 double poiseuille_epsilon(const FluidFields& f, double y_lo, double y_hi, double nu, double force);
+
+// The driving force per unit mass of the scene's channel: fluid.body_force[0] (a constant).
+double poiseuille_force(const Scene& s);
 
 }  // namespace arksph

@@ -15,6 +15,7 @@
 #include <system_error>
 
 #include "core/errors.hpp"
+#include "core/file_text.hpp"
 #include "io/json_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -61,13 +62,6 @@ bool is_run_file(const std::string& name) {
   return false;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string linked_output_message(const std::string& source, const std::string& dir, const std::string& name) {
   return source + ": output.directory: " + dir + "/" + echo_value(name, 60) +
          " is a symbolic link; arksph writes its files only inside the folder and never through a link "
@@ -112,7 +106,7 @@ OutputFolder::OutputFolder(const std::string& dir, const std::string& source, co
     ::close(lock_fd_);
     lock_fd_ = -1;
     if (err != EWOULDBLOCK) throw OutputError("cannot write " + lock + ": flock: " + std::strerror(err));
-    std::string pid = slurp(lock);
+    std::string pid = file_text(lock);
     while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
     throw InputError(source + ": " + key + ": " + dir + " is in use by another arksph run (pid " +
                      (all_digits(pid) ? pid : std::string("unknown")) +
@@ -179,7 +173,7 @@ std::string OutputFolder::run_id(bool* unidentified) const {
       // unreadable summary: try the collection
     }
   }
-  const std::string pvd = slurp(fs::path(dir_) / "particles.pvd");
+  const std::string pvd = file_text(fs::path(dir_) / "particles.pvd");
   const std::string key = "<!-- arksph run_id=\"";
   const auto b = pvd.find(key);
   const auto e = b == std::string::npos ? b : pvd.find('"', b + key.size());

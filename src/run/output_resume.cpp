@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/file_text.hpp"
 #include "run/checkpointing.hpp"  // scheduled_time
 #include "run/run_output.hpp"
 #include "io/csv_writer.hpp"
@@ -17,14 +18,6 @@
 namespace arksph {
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The value of attribute `name="..."` in an XML element line, entities decoded; "" if absent.
 std::string xml_attribute(const std::string& line, const std::string& name) {
@@ -93,7 +86,7 @@ OutputHistory read_output_history(const std::string& dir, double time, long fram
   OutputHistory h;
   h.frames = frames;
   h.time = time;
-  const std::string pvd_text = slurp(dir + "/particles.pvd");
+  const std::string pvd_text = file_text(dir + "/particles.pvd");
   const bool pvd_ok = pvd_text.find("<VTKFile") != std::string::npos && pvd_text.find("<Collection") != std::string::npos &&
                       pvd_text.find("</VTKFile>") != std::string::npos;
   std::istringstream pvd(pvd_ok ? pvd_text : std::string());
@@ -104,7 +97,7 @@ OutputHistory read_output_history(const std::string& dir, double time, long fram
     const double tv = std::strtod(t.c_str(), nullptr);
     if (tv <= time) h.pvd.emplace_back(tv, file);  // written with %.17g: exact
   }
-  h.csv_text = slurp(dir + "/timeseries.csv");
+  h.csv_text = file_text(dir + "/timeseries.csv");
   std::istringstream csv(h.csv_text);
   std::string line;
   if (std::getline(csv, line)) h.csv_header = split_commas(line);

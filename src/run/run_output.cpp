@@ -20,7 +20,6 @@ namespace arksph {
 
 namespace {
 using clock_type = std::chrono::steady_clock;
-double constant_force_x(const Scene& s) { return Expression(s.body_force.at(0), {"x", "y", "t"}).eval(0, 0, 0); }
 }  // namespace
 
 RunOutput::RunOutput(const Scene& scene, Model& model, const RunOptions& options, std::string run_id, int pieces)
@@ -99,7 +98,7 @@ void RunOutput::record(const FrameDiagnostics& diag, const StepStats& stats, con
     const std::vector<double>& yu = diag.poiseuille_profile;
     for (std::size_t k = 0; k + 1 < yu.size(); k += 2) {
       const double exact = poiseuille_velocity(yu[k] - 0.5 * (scene_.min[1] + scene_.max[1]), t, d,
-                                               scene_.viscosity, constant_force_x(scene_));
+                                               scene_.viscosity, poiseuille_force(scene_));
       prof.push_back({yu[k], yu[k + 1], exact});
     }
     write_csv(scene_.directory + "/poiseuille_profile.csv", {"y", "u_sph", "u_exact"}, prof);

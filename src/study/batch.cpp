@@ -18,6 +18,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/file_text.hpp"
 #include "run/interrupt.hpp"
 #include "study/batch_ranks.hpp"
 #include "run/output_folder.hpp"
@@ -53,13 +54,6 @@ std::string joined(const std::vector<std::string>& args) {
   std::string s;
   for (const auto& a : args) s += a + "\n";
   return s;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // Fills status, wall time, steps and metrics from the run's summary.json (if readable).
@@ -182,7 +176,7 @@ BatchResult run_batch(const Sweep& sw, const BatchOptions& opt) {
     r.values = sw.runs[i].values;
     if (!mine(i)) continue;  // another rank's run
     const std::string cmd = joined(child_args(sw, sw.runs[i], r.dir));
-    const bool same_run = slurp(fs::path(r.dir) / "batch_run.txt") == cmd;
+    const bool same_run = file_text(fs::path(r.dir) / "batch_run.txt") == cmd;
     const bool summary = same_run && read_summary(r);
     if (summary && r.status == "ok") {
       r.skipped = true;

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/errors.hpp"
+#include "core/file_text.hpp"
 #include "io/csv_writer.hpp"  // write_text_atomic
 #include "run/interrupt.hpp"
 #include "run/launcher_ranks.hpp"
@@ -29,13 +30,6 @@ constexpr auto kPoll = std::chrono::milliseconds(200);
 fs::path group_file(const std::string& folder) { return fs::path(folder) / ".arksph.batch_group"; }
 fs::path rows_file(const std::string& folder, int r) { return fs::path(folder) / (".arksph.batch_rank" + std::to_string(r)); }
 fs::path pid_file(const std::string& folder, int r) { return rows_file(folder, r).string() + ".pid"; }
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
 
@@ -84,7 +78,7 @@ bool decode(const std::string& line, BatchResult& res) {
 
 // True when the pid file names a process on this host that no longer exists.
 bool ended_here(const std::string& folder, int r) {
-  std::istringstream s(slurp(pid_file(folder, r)));
+  std::istringstream s(file_text(pid_file(folder, r)));
   std::string host;
   long pid = 0;
   if (!(s >> host >> pid) || host != host_name() || pid <= 0) return false;
@@ -102,7 +96,7 @@ void publish_batch_group(const std::string& folder, const LauncherRanks& ranks) 
 void join_batch_group(const std::string& folder, const LauncherRanks& ranks, double timeout_seconds) {
   const std::string expected = ranks.launch + "\n" + std::to_string(ranks.size) + "\n";
   const auto start = clock::now();
-  while (slurp(group_file(folder)) != expected) {
+  while (file_text(group_file(folder)) != expected) {
     if (std::chrono::duration<double>(clock::now() - start).count() > timeout_seconds)
       throw InputError("batch: rank " + std::to_string(ranks.rank) + " of " + std::to_string(ranks.size) + ": rank 0 of " +
                        ranks.launch + " did not take " + folder + " within " + std::to_string(int(timeout_seconds)) +
@@ -127,7 +121,7 @@ std::vector<int> collect_rank_rows(const std::string& folder, const LauncherRank
   for (int r = 1; r < ranks.size; ++r) {
     std::string why;
     for (;;) {
-      const std::string text = slurp(rows_file(folder, r));
+      const std::string text = file_text(rows_file(folder, r));
       if (!text.empty() && first_line(text) == ranks.launch) {
         std::istringstream lines(text.substr(text.find('\n') + 1));
         for (std::string line; std::getline(lines, line);)
@@ -135,7 +129,7 @@ std::vector<int> collect_rank_rows(const std::string& folder, const LauncherRank
         break;
       }
       const bool joined = fs::exists(pid_file(folder, r));
-      if (joined && ended_here(folder, r) && first_line(slurp(rows_file(folder, r))) != ranks.launch) {
+      if (joined && ended_here(folder, r) && first_line(file_text(rows_file(folder, r))) != ranks.launch) {
         why = "it ended without writing its results";
         break;
       }

@@ -197,7 +197,7 @@ TEST_CASE(CASE_TEST("spin_down")) { check_case("cases/spin_down/scene.toml"); }
 TEST_CASE(CASE_TEST("spin_down defaults")) { check_case("cases/spin_down/defaults.toml"); }
 TEST_CASE(CASE_TEST("taylor_green")) { check_case("cases/taylor_green/scene.toml"); }
 TEST_CASE(CASE_TEST("basa_cavity")) { check_case("cases/basa_cavity/scene.toml"); }
-TEST_CASE(CASE_TEST("cavity_re10000")) { check_case("cases/cavity_re10000/scene.toml"); }
+TEST_CASE(CASE_TEST("cavity_re10000") * doctest::test_suite("asan_slow")) { check_case("cases/cavity_re10000/scene.toml"); }
 TEST_CASE(CASE_TEST("hydrostatic_tank")) { check_case("cases/hydrostatic_tank/scene.toml"); }
 TEST_CASE(CASE_TEST("spin_down periodic")) { check_case("cases/spin_down/periodic/scene.toml"); }
 // The case is the constrained projection, which solves the Poisson equation on the particles.

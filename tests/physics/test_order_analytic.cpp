@@ -14,11 +14,11 @@
 using namespace arksph;
 
 namespace {
-const std::string kStudies = std::string(ARKSPH_SOURCE_DIR) + "/cases/studies";
+const std::string kAnalyticStudies = std::string(ARKSPH_SOURCE_DIR) + "/cases/studies";
 }
 
 TEST_CASE("order study in analytic mode: uniform oscillating flow gives the nominal orders 1-5") {
-  const OrderStudy study = read_order_study(kStudies + "/order_analytic.toml", {});
+  const OrderStudy study = read_order_study(kAnalyticStudies + "/order_analytic.toml", {});
   REQUIRE(study.reference == "analytic");
   const auto fits = run_order_study(study, false);
   REQUIRE(fits.size() == 5);
@@ -34,7 +34,7 @@ TEST_CASE("order study in analytic mode: a wrong analytic field levels the error
   testing::ScratchDir scratch("order_analytic_wrong");
   // u_exact off by 1e-3 (sin(10t)/10 + 1e-3): the error tends to 1e-3 instead of 0, the slope to ~0.
   std::ofstream(scratch / "wrong.toml")
-      << "[study]\nscene = \"" << kStudies << "/../sweeps/taylor_green_small.toml\"\n"
+      << "[study]\nscene = \"" << kAnalyticStudies << "/../sweeps/taylor_green_small.toml\"\n"
       << "set = [\"time.end=0.5\", \"initial.velocity=[\\\"0\\\", \\\"0\\\"]\", \"fluid.body_force=[\\\"cos(10*t)\\\", \\\"0\\\"]\"]\n"
       << "tables = [\"ARKODE_HEUN_EULER_2_1_2\"]\ndt = [4e-3, 2e-3, 1e-3]\nreference = \"analytic\"\n"
       << "analytic_velocity = [\"sin(10*t)/10 + 1e-3\", \"0\"]\n";
@@ -46,7 +46,7 @@ TEST_CASE("order study in analytic mode: a wrong analytic field levels the error
 
 TEST_CASE("order study in analytic mode: bad reference keys are refused naming the key") {
   testing::ScratchDir scratch("order_analytic_bad");
-  const std::string head = "[study]\nscene = \"" + kStudies + "/../sweeps/taylor_green_small.toml\"\n" +
+  const std::string head = "[study]\nscene = \"" + kAnalyticStudies + "/../sweeps/taylor_green_small.toml\"\n" +
                            "tables = [\"ARKODE_HEUN_EULER_2_1_2\"]\ndt = [1e-3, 5e-4]\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
       {head + "reference = \"exact\"\n", "study.reference"},

@@ -16,7 +16,7 @@
 using namespace arksph;
 
 namespace {
-double l1_error(const testing::ScratchDir& dir, const std::string& scheme, bool regularised) {
+double vortex_l1_error(const testing::ScratchDir& dir, const std::string& scheme, bool regularised) {
   std::vector<std::string> sets = {"method.scheme=\"" + scheme + "\"", "method.projection=\"cummins_rudman\"",
                                    "method.ppe_pressure_level=\"zero_min\"", "method.shifting_coefficient=8",
                                    "method.shifting_limit=0"};
@@ -29,7 +29,7 @@ double l1_error(const testing::ScratchDir& dir, const std::string& scheme, bool 
 TEST_CASE("regularisation: shifting brings the Taylor-Green vortex to its exact decay, every scheme") {
   const testing::ScratchDir dir("shifted_vortex");
   for (const std::string scheme : {"isph", "isph-gpps", "wcsph"}) {
-    const double plain = l1_error(dir, scheme, false), shifted = l1_error(dir, scheme, true);
+    const double plain = vortex_l1_error(dir, scheme, false), shifted = vortex_l1_error(dir, scheme, true);
     MESSAGE(scheme, ": relative L1 ", shifted, " with shifting, ", plain, " without");
     CHECK(shifted <= 0.05);
     CHECK(shifted <= 0.25 * plain);

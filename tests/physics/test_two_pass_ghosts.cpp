@@ -27,7 +27,7 @@ namespace {
 // A channel periodic in x with mirror no-slip walls at y = 0 and y = 1 (20 x 20 particles, quintic
 // spline, h = 1.5 dx). u = sin(pi y) cos(2 pi x), v = 0.5 sin(2 pi y) sin(2 pi x) are odd about both
 // walls, so the mirrored ghosts continue them exactly.
-const std::string kChannel = R"toml(
+const std::string kGhostsChannel = R"toml(
 [scene]
 name = "two_pass_ghosts"
 [domain]
@@ -58,7 +58,7 @@ end = 1
 // about y = 0 and 2-periodic in y, so the lattice and its velocities there are the channel's points
 // with their mirror ghosts, written out as real particles.
 std::string doubled_box() {
-  std::string s = kChannel;
+  std::string s = kGhostsChannel;
   auto swap = [&](const std::string& from, const std::string& to) { s.replace(s.find(from), from.size(), to); };
   swap("min = [0.0, 0.0]", "min = [0.0, -1.0]");
   swap("bottom = { kind = \"wall\" }", "bottom = { kind = \"periodic\" }");
@@ -66,11 +66,11 @@ std::string doubled_box() {
   return s;
 }
 
-struct Rates {
+struct GhostRates {
   std::vector<double> x, y, ax, ay;
 };
 
-Rates viscous_rates(const std::string& text, const std::vector<std::string>& sets) {
+GhostRates viscous_rates(const std::string& text, const std::vector<std::string>& sets) {
   std::ostringstream warnings;
   const Scene scene = read_scene_text(text, "test", sets, warnings);
   Model model = build_model(scene);
@@ -78,7 +78,7 @@ Rates viscous_rates(const std::string& text, const std::vector<std::string>& set
   model.rhs->initial_state(y.data());
   model.rhs->eval(0.0, y.data(), ydot.data());
   const auto& L = model.rhs->layout();
-  Rates r;
+  GhostRates r;
   for (std::size_t a = 0; a < L.n; ++a) {
     r.x.push_back(y[L.pos(0) + a]);
     r.y.push_back(y[L.pos(1) + a]);
@@ -92,7 +92,7 @@ Rates viscous_rates(const std::string& text, const std::vector<std::string>& set
 // the doubled periodic box, relative to the largest rate; `matched` counts the channel particles
 // found in the box.
 double channel_vs_box(const std::vector<std::string>& sets, std::size_t& matched) {
-  const Rates c = viscous_rates(kChannel, sets), b = viscous_rates(doubled_box(), sets);
+  const GhostRates c = viscous_rates(kGhostsChannel, sets), b = viscous_rates(doubled_box(), sets);
   const double dx = 0.05;
   auto key = [&](double x, double y) { return std::lround(x / dx - 0.5) * 1000 + std::lround(y / dx - 0.5); };
   std::map<long, std::size_t> box_index;
@@ -142,7 +142,7 @@ TEST_CASE("two_pass: a row sawtooth has no force with mirror walls, but has one 
   const double dx = 0.05, nu = 0.5, scale = nu / (dx * dx);
   const std::string sawtooth = "initial.velocity=[\"sin(20*pi*y)\", \"0\"]";  // (-1)^j on the rows
   auto max_rate = [&](const std::string& rule, bool wall_rows) {
-    const Rates r = viscous_rates(kChannel, {sawtooth, "boundary.wall_velocity=" + rule});
+    const GhostRates r = viscous_rates(kGhostsChannel, {sawtooth, "boundary.wall_velocity=" + rule});
     double m = 0;
     for (std::size_t a = 0; a < r.x.size(); ++a) {
       const bool near = r.y[a] < 3 * dx || r.y[a] > 1 - 3 * dx;

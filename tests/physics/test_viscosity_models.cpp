@@ -30,7 +30,7 @@ namespace {
 // about both walls, so the mirrored ghosts continue it exactly: nu lap u = -nu pi^2 sin(pi y) holds
 // for every particle, wall rows included. Density and pressure stay uniform (p = 0), so du/dt is the
 // viscous term alone.
-const std::string kChannel = R"toml(
+const std::string kViscosityChannel = R"toml(
 [scene]
 name = "viscous_lattice"
 [domain]
@@ -63,7 +63,7 @@ struct LatticeError {
 
 LatticeError channel_error(const std::vector<std::string>& sets) {
   std::ostringstream warnings;
-  Scene scene = read_scene_text(kChannel, "test", sets, warnings);
+  Scene scene = read_scene_text(kViscosityChannel, "test", sets, warnings);
   Model model = build_model(scene);
   std::vector<double> y(model.rhs->layout().size()), ydot(y.size());
   model.rhs->initial_state(y.data());
@@ -202,7 +202,7 @@ TEST_CASE("viscosity models: cleary scales with xi (pair weight 2 xi nu / rho, B
   // of the same particle is xi / 4 to round-off (1e-12: two sums of ~28 terms).
   auto accel = [](const std::vector<std::string>& sets) {
     std::ostringstream w;
-    Scene scene = read_scene_text(kChannel, "test", sets, w);
+    Scene scene = read_scene_text(kViscosityChannel, "test", sets, w);
     Model model = build_model(scene);
     std::vector<double> y(model.rhs->layout().size()), ydot(y.size());
     model.rhs->initial_state(y.data());
@@ -219,8 +219,8 @@ TEST_CASE("viscosity models: cleary scales with xi (pair weight 2 xi nu / rho, B
 
 TEST_CASE("viscosity models: two_pass doubles the ghost depth (Basa §5.2)") {
   std::ostringstream w;
-  const Model one = build_model(read_scene_text(kChannel, "test", {"method.viscosity_model=morris"}, w));
-  const Model two = build_model(read_scene_text(kChannel, "test", {"method.viscosity_model=two_pass"}, w));
+  const Model one = build_model(read_scene_text(kViscosityChannel, "test", {"method.viscosity_model=morris"}, w));
+  const Model two = build_model(read_scene_text(kViscosityChannel, "test", {"method.viscosity_model=two_pass"}, w));
   const double R = one.rhs->kernel().radius();
   CHECK(one.rhs->ghost_depth() == doctest::Approx(R));
   CHECK(two.rhs->ghost_depth() == doctest::Approx(2.0 * R));
@@ -233,7 +233,7 @@ TEST_CASE("viscosity models: the viscous terms, and only they, can be implicit")
   std::ostringstream w;
   for (const std::string& m : registered_names("viscosity_model")) {
     CAPTURE(m);
-    const Scene scene = read_scene_text(kChannel, "test", {"method.viscosity_model=" + m}, w);
+    const Scene scene = read_scene_text(kViscosityChannel, "test", {"method.viscosity_model=" + m}, w);
     const auto& traits = viscosity_models().at(m).traits;
     const auto terms = terms_from_scene(scene, 10.0);
     int implicit = 0;

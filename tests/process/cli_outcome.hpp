@@ -12,13 +12,9 @@
 #include <string>
 
 #include "minimal_scene.hpp"
+#include "run_arksph.hpp"  // arksph_binary()
 
 namespace arksph::testing {
-
-inline std::string arksph_binary() {
-  const char* other = std::getenv("ARKSPH_TEST_BINARY");
-  return other && *other ? other : ARKSPH_BINARY;
-}
 
 struct CliOutcome {
   int code = -1;    // exit code; 124 when the time limit ended the run; -1 if killed by a signal

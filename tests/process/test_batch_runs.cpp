@@ -20,16 +20,17 @@
 
 using namespace arksph;
 namespace fs = std::filesystem;
+using arksph::testing::count_lines;
 
 namespace {
 const std::string kSweepDir = std::string(ARKSPH_SOURCE_DIR) + "/cases/sweeps";
 
-struct Outcome {
+struct BinaryOutcome {
   int code = -1;
   std::string err;
 };
 
-Outcome run_binary(const std::string& args, const testing::ScratchDir& scratch) {
+BinaryOutcome run_binary(const std::string& args, const testing::ScratchDir& scratch) {
   static int calls = 0;
   const std::string err = scratch / ("stderr_" + std::to_string(calls++) + ".txt");
   const int status = std::system((std::string(ARKSPH_BINARY) + " " + args + " >/dev/null 2>" + err).c_str());
@@ -47,11 +48,6 @@ std::string sweep_text(const std::string& body) {
   return "[sweep]\nscene = \"taylor_green_small.toml\"\n" + body;
 }
 
-int count_lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
 }  // namespace
 
 // The CI sweep: 12 runs, each must finish ok (status "ok" in its summary.json, exit 0); the
@@ -59,7 +55,7 @@ int count_lines(const std::string& s) {
 TEST_CASE("batch: the CI sweep runs 12 runs ok, and a second invocation skips them all") {
   testing::ScratchDir scratch("batch_ci");
   const std::string out = scratch / "ci";
-  const Outcome first = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
+  const BinaryOutcome first = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
   CHECK(first.code == 0);
   const auto rows = testing::read_csv(out + "/batch.csv");
   REQUIRE(rows.size() == 13);  // header + 12 runs
@@ -79,7 +75,7 @@ TEST_CASE("batch: the CI sweep runs 12 runs ok, and a second invocation skips th
   CHECK(j.find("runs")->items.size() == 12);
   CHECK(j.find("runs_not_ok")->number == 0);
 
-  const Outcome second = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
+  const BinaryOutcome second = run_binary("batch " + kSweepDir + "/ci_sweep.toml --jobs 2 --out " + out, scratch);
   CHECK(second.code == 0);
   const auto again = testing::read_csv(out + "/batch.csv");
   REQUIRE(again.size() == 13);
@@ -96,7 +92,7 @@ TEST_CASE("batch: a failing run gives a non-zero exit, a bad value is a bad swee
   const std::string scene = kSweepDir + "/taylor_green_small.toml";
   std::ofstream(scratch / "fail.toml") << "[sweep]\nscene = \"" << scene
                                        << "\"\nset = [\"time.end=0.02\"]\n[[vary]]\nkey = \"time.max_steps\"\nvalues = [1, 100000]\n";
-  const Outcome o = run_binary("batch " + (scratch / "fail.toml") + " --out " + (scratch / "out"), scratch);
+  const BinaryOutcome o = run_binary("batch " + (scratch / "fail.toml") + " --out " + (scratch / "out"), scratch);
   CHECK(o.code == 3);
   const auto rows = testing::read_csv(scratch / "out/batch.csv");
   REQUIRE(rows.size() == 3);
@@ -107,7 +103,7 @@ TEST_CASE("batch: a failing run gives a non-zero exit, a bad value is a bad swee
 
   std::ofstream(scratch / "bad.toml") << "[sweep]\nscene = \"" << scene
                                       << "\"\n[[vary]]\nkey = \"method.kernel\"\nvalues = [\"cubic_spline\", \"no_such_kernel\"]\n";
-  const Outcome b = run_binary("batch " + (scratch / "bad.toml") + " --out " + (scratch / "bad"), scratch);
+  const BinaryOutcome b = run_binary("batch " + (scratch / "bad.toml") + " --out " + (scratch / "bad"), scratch);
   CHECK(b.code == 2);
   CHECK(count_lines(b.err) == 1);
   CHECK(b.err.find("method.kernel") != std::string::npos);

@@ -66,7 +66,7 @@ ImexFunctions decay_functions(DecaySplit& split) {
 
 // The arksph binary with arguments, stderr captured (tests/process/cli_outcome.hpp).
 using Outcome = arksph::testing::CliOutcome;
-Outcome run_arksph(const std::string& args) { return arksph::testing::run_cli(args); }
+Outcome run_cli_line(const std::string& args) { return arksph::testing::run_cli(args); }
 }  // namespace
 
 TEST_CASE("callback guard: the first exception is kept, the flag is negative, rethrow clears it") {
@@ -180,7 +180,7 @@ TEST_CASE("cli: a right-hand side failing inside a step exits 3 with its own mes
     CAPTURE(args);
     const fs::path dir = fs::temp_directory_path() / ("arksph_callback_blowup_" + std::to_string(getpid()));
     fs::remove_all(dir);
-    const Outcome o = run_arksph(args + " --out " + dir.string());
+    const Outcome o = run_cli_line(args + " --out " + dir.string());
     CHECK(o.code == 3);
     CHECK(o.err.find("neighbour cells") != std::string::npos);  // CellList::build's own message
     CHECK(o.err.find("the run has blown up") != std::string::npos);

@@ -51,7 +51,7 @@ void check_same_state(const std::string& path_a, const std::string& path_b) {
 }
 
 // The number after "key": in a summary.json text (NaN if the key is missing).
-double json_number(const std::string& text, const std::string& key) {
+double summary_number(const std::string& text, const std::string& key) {
   const std::size_t at = text.find("\"" + key + "\": ");
   return at == std::string::npos ? std::nan("") : std::stod(text.substr(at + key.size() + 4));
 }
@@ -110,7 +110,7 @@ TEST_CASE("checkpoint: a restarted run ends bit-identical to the uninterrupted r
   REQUIRE(run_arksph("run --restart " + half + "/checkpoint.h5 --quiet --set time.end=0.2", log) == 0);
   const double cpu_end = read_checkpoint(half + "/checkpoint.h5").cpu_seconds;
   CHECK(cpu_end > 1e4);
-  CHECK(json_number(slurp(half + "/summary.json"), "cpu_seconds") >= cpu_end);
+  CHECK(summary_number(slurp(half + "/summary.json"), "cpu_seconds") >= cpu_end);
   check_same_state(full + "/checkpoint.h5", half + "/checkpoint.h5");
   CHECK(slurp(full + "/timeseries.csv") == slurp(half + "/timeseries.csv"));
   // The same entries; the run id comment differs (two runs).

@@ -13,19 +13,16 @@
 #include <string>
 
 #include "cli_outcome.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
+using arksph::testing::count_lines;
 
 namespace {
 // The arksph binary with arguments, stderr captured (tests/process/cli_outcome.hpp).
 using Outcome = arksph::testing::CliOutcome;
 Outcome run_arksph(const std::string& args) { return arksph::testing::run_cli(args); }
 
-int count_lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
 
 std::string read_file(const fs::path& p) {
   std::ifstream in(p);

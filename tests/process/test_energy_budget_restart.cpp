@@ -19,7 +19,7 @@ using arksph::testing::ScratchDir;
 namespace {
 
 // The column `name` of a timeseries.csv (empty if missing).
-std::vector<double> column(const std::string& path, const std::string& name) {
+std::vector<double> csv_column(const std::string& path, const std::string& name) {
   const auto rows = testing::read_csv(path);
   std::vector<double> out;
   if (rows.empty()) return out;
@@ -44,15 +44,15 @@ TEST_CASE("energy budget: a restarted run continues the viscous dissipation of i
   REQUIRE(run_arksph("run " + scene + " --quiet --out " + half + " --set time.end=0.15", log) == 0);
   const Checkpoint first = read_checkpoint(half + "/checkpoint.h5");
   REQUIRE(first.has_viscous_dissipation);
-  const std::vector<double> before = column(half + "/timeseries.csv", "viscous_dissipation");
+  const std::vector<double> before = csv_column(half + "/timeseries.csv", "viscous_dissipation");
   REQUIRE(before.size() == 4);  // t = 0, 0.05, 0.1, 0.15
   CHECK(first.viscous_dissipation > 0);
   CHECK(first.viscous_dissipation == doctest::Approx(before.back()).epsilon(1e-9));
   REQUIRE(run_arksph("run --restart " + half + "/checkpoint.h5 --quiet --set time.end=0.3", log) == 0);
-  const std::vector<double> expected = column(full + "/timeseries.csv", "viscous_dissipation");
-  const std::vector<double> continued = column(half + "/timeseries.csv", "viscous_dissipation");
-  const std::vector<double> total_expected = column(full + "/timeseries.csv", "total_energy");
-  const std::vector<double> total = column(half + "/timeseries.csv", "total_energy");
+  const std::vector<double> expected = csv_column(full + "/timeseries.csv", "viscous_dissipation");
+  const std::vector<double> continued = csv_column(half + "/timeseries.csv", "viscous_dissipation");
+  const std::vector<double> total_expected = csv_column(full + "/timeseries.csv", "total_energy");
+  const std::vector<double> total = csv_column(half + "/timeseries.csv", "total_energy");
   REQUIRE(expected.size() == 7);
   REQUIRE(continued.size() == expected.size());
   REQUIRE(total.size() == expected.size());

@@ -31,7 +31,7 @@ using arksph::testing::slurp;
 
 namespace {
 
-const char* const kScene = arksph::testing::kMinimalScene;  // tests/process/cli_outcome.hpp
+const char* const kFaultsScene = arksph::testing::kMinimalScene;  // tests/process/cli_outcome.hpp
 
 // Exit 3, one line, "t = ..., particle id <id>: <quantity>" (any id if `id` is empty).
 void check_diagnosed(const CliOutcome& o, const std::string& id, const std::string& quantity) {
@@ -98,7 +98,7 @@ int wait_exit(pid_t child, int seconds) {
 TEST_CASE("hostile runs: a NaN or infinity arising in the run exits 3 naming time, particle id and quantity") {
   ScratchDir dir("hostile_nan");
   const std::string scene = dir / "S.toml", out = dir / "out";
-  std::ofstream(scene) << kScene;
+  std::ofstream(scene) << kFaultsScene;
   auto run = [&](const std::string& args) { return run_cli("run " + scene + " --quiet --out " + out + " " + args); };
   // The body force turns NaN after t = 0.003 at the particle at (0.95, 0.95) only: id 99, whatever
   // its index after the shuffle of the initial order and the re-sort by cell.
@@ -118,7 +118,7 @@ TEST_CASE("hostile runs: a NaN or infinity arising in the run exits 3 naming tim
 TEST_CASE("hostile runs: a NaN in the state of a checkpoint exits 3 naming the particle id") {
   ScratchDir dir("hostile_restart_nan");
   const std::string scene = dir / "S.toml", out = dir / "out";
-  std::ofstream(scene) << kScene;
+  std::ofstream(scene) << kFaultsScene;
   REQUIRE(run_cli("run " + scene + " --quiet --out " + out).code == 0);
   const std::string file = out + "/checkpoint.h5";
   arksph::Checkpoint c = arksph::read_checkpoint(file);
@@ -133,7 +133,7 @@ TEST_CASE("hostile runs: a NaN in the state of a checkpoint exits 3 naming the p
 TEST_CASE("hostile runs: an adaptive step that underflows exits 3 instead of running for ever") {
   ScratchDir dir("hostile_underflow");
   const std::string scene = dir / "S.toml";
-  std::ofstream(scene) << kScene;
+  std::ofstream(scene) << kFaultsScene;
   // An acceleration of 1e300 limits the step to ~1e-151 (0.25 sqrt(h / a)): 10^149 steps to
   // time.end. A version without the check runs until the time limit (exit 124).
   const CliOutcome o = run_cli("run " + scene + " --quiet --out " + (dir / "out") + " --set 'fluid.body_force=[1e300, 0]'"
@@ -174,7 +174,7 @@ TEST_CASE("hostile runs: a signal during set-up stops the run there with 128 + s
     CAPTURE(sig);
     ScratchDir dir("hostile_setup_signal_" + std::to_string(sig));
     const std::string scene = dir / "S.toml", out = dir / "out", log = dir / "log.txt";
-    std::ofstream(scene) << kScene;
+    std::ofstream(scene) << kFaultsScene;
     // The signal is pending from the start: a version that does not poll during set-up (and keeps
     // the signal blocked) finishes the run (exit 0).
     const pid_t child = spawn({"run", scene, "--quiet", "--out", out}, log, sig);
@@ -196,7 +196,7 @@ TEST_CASE("hostile runs: a signal during set-up stops the run there with 128 + s
 TEST_CASE("hostile runs: time.blowup_speed stops a run whose particles pass it") {
   ScratchDir dir("blowup_speed");
   const std::string scene = dir / "S.toml", out = dir / "out";
-  std::ofstream(scene) << kScene << R"(
+  std::ofstream(scene) << kFaultsScene << R"(
 [boundary]
 left = { kind = "periodic" }
 right = { kind = "periodic" }

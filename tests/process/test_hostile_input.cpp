@@ -20,7 +20,7 @@ using arksph::testing::ScratchDir;
 
 namespace {
 
-const char* const kScene = arksph::testing::kMinimalScene;  // tests/process/cli_outcome.hpp
+const char* const kInputScene = arksph::testing::kMinimalScene;  // tests/process/cli_outcome.hpp
 
 const char* kScene1d = R"(
 [scene]
@@ -38,7 +38,7 @@ struct Scenes {
   ScratchDir dir{"hostile_input"};
   std::string two_d = dir / "S.toml", one_d = dir / "S1.toml", out = dir / "out";
   Scenes() {
-    std::ofstream(two_d) << kScene;
+    std::ofstream(two_d) << kInputScene;
     std::ofstream(one_d) << kScene1d;
   }
   // `arksph run SCENE --quiet --out OUT ARGS`
@@ -99,8 +99,8 @@ TEST_CASE("hostile input: runs that could never reach time.end exit 2 naming the
   check_refused(s.run("--set time.end=1 --set output.checkpoint_every=1e-9", "", "", 60), "output.checkpoint_every",
                 "999999999 checkpoints");
   // The limit itself, 100,000 frames or checkpoints, is allowed (read only: the run is not started).
-  CHECK_NOTHROW(arksph::read_scene_text(kScene, "S.toml", {"time.end=1", "output.every=1e-5"}));
-  CHECK_NOTHROW(arksph::read_scene_text(kScene, "S.toml", {"time.end=1", "output.checkpoint_every=1e-5"}));
+  CHECK_NOTHROW(arksph::read_scene_text(kInputScene, "S.toml", {"time.end=1", "output.every=1e-5"}));
+  CHECK_NOTHROW(arksph::read_scene_text(kInputScene, "S.toml", {"time.end=1", "output.checkpoint_every=1e-5"}));
 }
 
 TEST_CASE("hostile input: metrics and options that do not apply to the scene exit 2 naming the keys") {

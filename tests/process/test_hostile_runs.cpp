@@ -16,23 +16,19 @@ using arksph::testing::run_arksph_captured;
 using arksph::testing::RunOutcome;
 using arksph::testing::ScratchDir;
 using arksph::testing::slurp;
+using arksph::testing::count_lines;
 
 namespace {
 
-const char* kScene =
+const char* kRunsScene =
     "[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[fluid]\nspacing = 0.1\n[time]\nend = 0.01\n";
 
 std::string write_scene(const ScratchDir& scratch, const std::string& extra = "") {
   const std::string path = scratch / "S.toml";
-  std::ofstream(path) << kScene << extra;
+  std::ofstream(path) << kRunsScene << extra;
   return path;
 }
 
-int count_lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
 
 // The longest line of a text (messages must stay readable).
 std::size_t longest_line(const std::string& s) {

@@ -10,13 +10,13 @@
 #include "test_support.hpp"
 
 namespace {
-const std::string kStudies = std::string(ARKSPH_SOURCE_DIR) + "/cases/studies";
+const std::string kExitStudies = std::string(ARKSPH_SOURCE_DIR) + "/cases/studies";
 }
 
 // A tolerance no table can meet (1e-6) must flag every table and exit 4; the CSVs are written.
 TEST_CASE("order study: a missed order is flagged in order_fit.csv and gives exit 4") {
   arksph::testing::ScratchDir scratch("order_flag");
-  std::ofstream(scratch / "s.toml") << "[study]\nscene = \"" << kStudies << "/../sweeps/taylor_green_small.toml\"\n"
+  std::ofstream(scratch / "s.toml") << "[study]\nscene = \"" << kExitStudies << "/../sweeps/taylor_green_small.toml\"\n"
                                     << "set = [\"time.end=0.01\"]\ntables = [\"ARKODE_HEUN_EULER_2_1_2\"]\n"
                                     << "dt = [2e-3, 1e-3]\nreference_dt_divisor = 4\ntolerance = 1e-6\n";
   const std::string cmd = "OMP_NUM_THREADS=1 " + std::string(ARKSPH_BINARY) + " study order " + (scratch / "s.toml") +

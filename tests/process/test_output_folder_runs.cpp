@@ -29,12 +29,12 @@ using arksph::testing::slurp;
 namespace {
 
 // The minimal scene: 10 x 10 particles in the unit box, two steps' worth of time.
-const char* kScene =
+const char* kFolderScene =
     "[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[fluid]\nspacing = 0.1\n[time]\nend = 0.01\n";
 
-std::string write_scene(const ScratchDir& scratch) {
+std::string write_folder_scene(const ScratchDir& scratch) {
   const std::string path = scratch / "S.toml";
-  std::ofstream(path) << kScene;
+  std::ofstream(path) << kFolderScene;
   return path;
 }
 
@@ -60,7 +60,7 @@ int hold_lock(const std::string& dir) {
 
 TEST_CASE("output folder: a second run into a folder locked by another run exits 2 naming its pid") {
   ScratchDir scratch("lock");
-  const std::string scene = write_scene(scratch), out = scratch / "out";
+  const std::string scene = write_folder_scene(scratch), out = scratch / "out";
   const int fd = hold_lock(out);
   const std::string pid = std::to_string(::getpid());
   const RunOutcome o = run_arksph_captured("run " + scene + " --quiet --out " + out, scratch.dir.string());
@@ -73,7 +73,7 @@ TEST_CASE("output folder: a second run into a folder locked by another run exits
 
 TEST_CASE("output folder: a second batch into a locked batch folder exits 2 naming the pid") {
   ScratchDir scratch("batch_lock");
-  write_scene(scratch);
+  write_folder_scene(scratch);
   std::ofstream(scratch / "sweep.toml") << "[sweep]\nscene = \"S.toml\"\n[[vary]]\nkey = \"time.end\"\nvalues = [0.01]\n";
   const std::string out = scratch / "b";
   const int fd = hold_lock(out);
@@ -87,7 +87,7 @@ TEST_CASE("output folder: a second batch into a locked batch folder exits 2 nami
 
 TEST_CASE("output folder: a fresh run removes the frames of an earlier, longer run") {
   ScratchDir scratch("stale");
-  const std::string scene = write_scene(scratch), out = scratch / "out";
+  const std::string scene = write_folder_scene(scratch), out = scratch / "out";
   REQUIRE(run_arksph_captured("run " + scene + " --quiet --out " + out + " --set output.every=0.0025",
                               scratch.dir.string()).code == 0);
   REQUIRE(fs::exists(out + "/particles_000004.vtp"));
@@ -100,7 +100,7 @@ TEST_CASE("output folder: a fresh run removes the frames of an earlier, longer r
 
 TEST_CASE("output folder: files that are not run outputs refuse the folder unless --overwrite, and stay") {
   ScratchDir scratch("foreign");
-  const std::string scene = write_scene(scratch), out = scratch / "out";
+  const std::string scene = write_folder_scene(scratch), out = scratch / "out";
   fs::create_directories(out);
   std::ofstream(out + "/notes.txt") << "mine\n";
   const RunOutcome refused = run_arksph_captured("run " + scene + " --quiet --out " + out, scratch.dir.string());
@@ -115,7 +115,7 @@ TEST_CASE("output folder: files that are not run outputs refuse the folder unles
 
 TEST_CASE("output folder: a restart into the folder of another run exits 2 and leaves it alone") {
   ScratchDir scratch("other_run");
-  const std::string scene = write_scene(scratch), a = scratch / "a", b = scratch / "b";
+  const std::string scene = write_folder_scene(scratch), a = scratch / "a", b = scratch / "b";
   REQUIRE(run_arksph_captured("run " + scene + " --quiet --out " + a, scratch.dir.string()).code == 0);
   REQUIRE(run_arksph_captured("run " + scene + " --quiet --out " + b + " --set output.every=0.005",
                               scratch.dir.string()).code == 0);
@@ -143,7 +143,7 @@ TEST_CASE("output folder: a restart with particles.pvd missing or garbage warns 
   for (const bool garbage : {false, true}) {
     CAPTURE(garbage);
     ScratchDir scratch(garbage ? "pvd_garbage" : "pvd_missing");
-    const std::string scene = write_scene(scratch), out = scratch / "out";
+    const std::string scene = write_folder_scene(scratch), out = scratch / "out";
     REQUIRE(run_arksph_captured("run " + scene + " --quiet --out " + out + " --set output.every=0.005",
                                 scratch.dir.string()).code == 0);
     REQUIRE(count(slurp(out + "/particles.pvd"), "<DataSet") == 3);
@@ -161,7 +161,7 @@ TEST_CASE("output folder: a restart with particles.pvd missing or garbage warns 
 
 TEST_CASE("output folder: a restart that changes a key shaping the particle set or the walls exits 2 naming it") {
   ScratchDir scratch("restart_keys");
-  const std::string scene = write_scene(scratch), out = scratch / "out";
+  const std::string scene = write_folder_scene(scratch), out = scratch / "out";
   REQUIRE(run_arksph_captured("run " + scene + " --quiet --out " + out, scratch.dir.string()).code == 0);
   const std::string ck = out + "/checkpoint.h5";
   // Each keeps the particle count (100) so that the particle-array check alone would pass.
@@ -187,7 +187,7 @@ TEST_CASE("output folder: a restart that changes a key shaping the particle set 
 // them by id, so that row k of every frame is the same particle.
 TEST_CASE("output folder: VTP rows are in id order with re-sorting on") {
   ScratchDir scratch("id_order");
-  const std::string scene = write_scene(scratch), out = scratch / "out";
+  const std::string scene = write_folder_scene(scratch), out = scratch / "out";
   REQUIRE(run_arksph_captured("run " + scene + " --quiet --out " + out +
                                   " --set method.reorder_every=1 --set time.dt=0.001 --set output.every=0.005 "
                                   "--set 'initial.velocity=[\"sin(6*y)\", \"cos(5*x)\"]'",

@@ -23,7 +23,7 @@ using arksph::testing::ScratchDir;
 
 namespace {
 
-const std::string kScene = std::string(ARKSPH_SOURCE_DIR) + "/cases/sweeps/taylor_green_small.toml";
+const std::string kStudyScene = std::string(ARKSPH_SOURCE_DIR) + "/cases/sweeps/taylor_green_small.toml";
 
 // `arksph ARGS` with the environment `env` (VAR=VALUE ...), killed after `seconds` (exit 124).
 RunOutcome study(const std::string& args, const ScratchDir& scratch, const std::string& env = "", int seconds = 120) {
@@ -33,14 +33,14 @@ RunOutcome study(const std::string& args, const ScratchDir& scratch, const std::
 }
 
 int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
-bool says(const RunOutcome& o, const std::string& text) { return o.err.find(text) != std::string::npos; }
+bool err_says(const RunOutcome& o, const std::string& text) { return o.err.find(text) != std::string::npos; }
 
 // An order study of Heun-Euler on the vortex to t = 0.01 with `extra` in [study] (which gives dt
 // unless `dt` is empty); a tolerance no table misses, so that a finished study exits 0.
 std::string order_file(const ScratchDir& scratch, const std::string& extra, const std::string& dt = "[2e-3, 1e-3]",
                        const std::string& name = "order.toml") {
   const std::string path = scratch / name;
-  std::ofstream(path) << "[study]\nscene = \"" << kScene << "\"\nset = [\"time.end=0.01\"]\n"
+  std::ofstream(path) << "[study]\nscene = \"" << kStudyScene << "\"\nset = [\"time.end=0.01\"]\n"
                       << "tables = [\"ARKODE_HEUN_EULER_2_1_2\"]\n"
                       << (dt.empty() ? "" : "dt = " + dt + "\n") << "reference_dt_divisor = 2\ntolerance = 10\n"
                       << extra;
@@ -53,7 +53,7 @@ std::string wp_file(const ScratchDir& scratch,
                     const std::string& velocity = "[\"sin(2*pi*x)*cos(2*pi*y)*exp(-8*pi^2*0.01*t)\", "
                                                   "\"-cos(2*pi*x)*sin(2*pi*y)*exp(-8*pi^2*0.01*t)\"]") {
   const std::string path = scratch / "wp.toml";
-  std::ofstream(path) << "[study]\nscene = \"" << kScene << "\"\nset = [\"time.end=0.01\", \"output.every=0.01\"]\n"
+  std::ofstream(path) << "[study]\nscene = \"" << kStudyScene << "\"\nset = [\"time.end=0.01\", \"output.every=0.01\"]\n"
                       << "reference = \"analytic\"\nanalytic_velocity = " << velocity << "\n"
                       << "[[scheme]]\nname = \"wcsph\"\nset = [\"method.scheme=wcsph\"]\n"
                       << "[[resolution]]\nname = \"8\"\nset = [\"fluid.spacing=0.125\"]\n"
@@ -85,8 +85,8 @@ TEST_CASE("study rough edges: item 14 study order into a folder held by another 
   CAPTURE(o.err);
   CHECK(o.code == 2);
   CHECK(lines(o.err) == 1);
-  CHECK(says(o, out));
-  CHECK(says(o, "pid " + std::to_string(::getpid())));
+  CHECK(err_says(o, out));
+  CHECK(err_says(o, "pid " + std::to_string(::getpid())));
   CHECK_FALSE(fs::exists(out + "/order_errors.csv"));
 }
 
@@ -109,7 +109,7 @@ TEST_CASE("study rough edges: item 14 study work-precision holds its folder's lo
   const RunOutcome second = study("study work-precision " + wp_file(scratch) + " --quiet --out " + out, scratch);
   CHECK(second.code == 2);
   CHECK(lines(second.err) == 1);
-  CHECK(says(second, "pid " + std::to_string(::getpid())));
+  CHECK(err_says(second, "pid " + std::to_string(::getpid())));
 }
 
 TEST_CASE("study rough edges: item 14 a study under an MPI launcher of 2 processes is refused (exit 2, one line)") {
@@ -123,7 +123,7 @@ TEST_CASE("study rough edges: item 14 a study under an MPI launcher of 2 process
     CAPTURE(rank0.err);
     CHECK(rank0.code == 2);
     CHECK(lines(rank0.err) == 1);
-    CHECK(says(rank0, "MPI launcher"));
+    CHECK(err_says(rank0, "MPI launcher"));
     const RunOutcome rank1 = study("study " + std::string(kind) + path + " --out " + (scratch / "out"), scratch,
                                    "OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=1");
     CHECK(rank1.code == 2);
@@ -139,8 +139,8 @@ TEST_CASE("study rough edges: item 16 a step that cannot advance time is refused
   CAPTURE(o.err);
   CHECK(o.code == 2);
   CHECK(lines(o.err) == 1);
-  CHECK(says(o, "study.dt"));
-  CHECK(says(o, "1e-300"));
+  CHECK(err_says(o, "study.dt"));
+  CHECK(err_says(o, "1e-300"));
   CHECK_FALSE(fs::exists(scratch / "out"));
   // The same in a table's own list.
   const RunOutcome per_table = study(
@@ -148,7 +148,7 @@ TEST_CASE("study rough edges: item 16 a step that cannot advance time is refused
           (scratch / "out"),
       scratch, "", 60);
   CHECK(per_table.code == 2);
-  CHECK(says(per_table, "dt_for.ARKODE_HEUN_EULER_2_1_2"));
+  CHECK(err_says(per_table, "dt_for.ARKODE_HEUN_EULER_2_1_2"));
 }
 
 TEST_CASE("study rough edges: item 17 a plot that hangs is stopped at ARKSPH_PLOT_TIMEOUT, the study's exit code stands") {
@@ -160,7 +160,7 @@ TEST_CASE("study rough edges: item 17 a plot that hangs is stopped at ARKSPH_PLO
   CAPTURE(o.err);
   CHECK(o.code == 0);  // 124: the study waited for the plot
   CHECK(lines(o.err) == 1);
-  CHECK(says(o, "did not finish within 2 s"));
+  CHECK(err_says(o, "did not finish within 2 s"));
   CHECK(fs::exists(out + "/order_fit.csv"));
 }
 
@@ -172,7 +172,7 @@ TEST_CASE("study rough edges: item 19 --out naming a regular file exits 5 with o
   CAPTURE(order.err);
   CHECK(order.code == 5);
   CHECK(lines(order.err) == 1);
-  CHECK(says(order, "cannot write " + file));
+  CHECK(err_says(order, "cannot write " + file));
   const RunOutcome wp = study("study work-precision " + wp_file(scratch) + " --out " + file, scratch);
   CAPTURE(wp.err);
   CHECK(wp.code == 5);
@@ -189,8 +189,8 @@ TEST_CASE("study rough edges: item 21 an analytic reference that is not finite i
   CAPTURE(order.err);
   CHECK(order.code == 2);  // not 4 with an order of 0 from errors of 0
   CHECK(lines(order.err) == 1);
-  CHECK(says(order, "study.analytic_velocity"));
-  CHECK(says(order, "not finite"));
+  CHECK(err_says(order, "study.analytic_velocity"));
+  CHECK(err_says(order, "not finite"));
   CHECK_FALSE(fs::exists(scratch / "out_order/order_errors.csv"));
   const RunOutcome wp = study("study work-precision " + wp_file(scratch, nan_velocity) + " --quiet --out " +
                                   (scratch / "out_wp"),
@@ -198,28 +198,28 @@ TEST_CASE("study rough edges: item 21 an analytic reference that is not finite i
   CAPTURE(wp.err);
   CHECK(wp.code == 2);  // not 3 "no run finished"
   CHECK(lines(wp.err) == 1);
-  CHECK(says(wp, "study.analytic_velocity"));
-  CHECK(says(wp, "not finite"));
-  CHECK_FALSE(says(wp, "no run finished"));
+  CHECK(err_says(wp, "study.analytic_velocity"));
+  CHECK(err_says(wp, "not finite"));
+  CHECK_FALSE(err_says(wp, "no run finished"));
 }
 
 TEST_CASE("study rough edges: item 22 an IMEX pair under isph with C&R's projection is refused with run's message") {
   ScratchDir scratch("rough_imex_isph");
   const std::string sets = "--set time.end=0.01 --set method.scheme=isph --set method.projection=cummins_rudman";
-  const RunOutcome run = study("run " + kScene + " " + sets + " --set time.imex=true --out " + (scratch / "run"), scratch);
+  const RunOutcome run = study("run " + kStudyScene + " " + sets + " --set time.imex=true --out " + (scratch / "run"), scratch);
   REQUIRE(run.code == 2);
   const auto at = run.err.find("time.imex: ");
   REQUIRE(at != std::string::npos);
   const std::string reason = run.err.substr(at, run.err.find('\n', at) - at);
   std::ofstream(scratch / "imex.toml")
-      << "[study]\nscene = \"" << kScene << "\"\n"
+      << "[study]\nscene = \"" << kStudyScene << "\"\n"
       << "set = [\"time.end=0.01\", \"method.scheme=isph\", \"method.projection=cummins_rudman\"]\n"
       << "tables = []\nimex_pairs = [\"ARK324L2SA\"]\ndt = [2e-3, 1e-3]\nreference_dt_divisor = 2\n";
   const RunOutcome o = study("study order " + (scratch / "imex.toml") + " --out " + (scratch / "out"), scratch);
   CAPTURE(o.err);
   CHECK(o.code == 2);
   CHECK(lines(o.err) == 1);
-  CHECK(says(o, reason));
+  CHECK(err_says(o, reason));
   CHECK_FALSE(fs::exists(scratch / "out"));
 }
 
@@ -230,14 +230,14 @@ TEST_CASE("study rough edges: item 34 equal steps and steps longer than time.end
   CAPTURE(equal.err);
   CHECK(equal.code == 2);  // not 4 with an order of -nan
   CHECK(lines(equal.err) == 1);
-  CHECK(says(equal, "study.dt"));
+  CHECK(err_says(equal, "study.dt"));
   const RunOutcome longer = study("study order " + order_file(scratch, "", "[0.05, 0.02]") + " --out " + (scratch / "out"),
                                   scratch);
   CAPTURE(longer.err);
   CHECK(longer.code == 2);  // not an order of 0
   CHECK(lines(longer.err) == 1);
-  CHECK(says(longer, "study.dt"));
-  CHECK(says(longer, "time.end"));
+  CHECK(err_says(longer, "study.dt"));
+  CHECK(err_says(longer, "time.end"));
   CHECK_FALSE(fs::exists(scratch / "out"));
 }
 

@@ -18,7 +18,7 @@
 using namespace arksph;
 
 namespace {
-const char* kBox = R"toml(
+const char* kDivergenceBox = R"toml(
 [scene]
 name = "divergence_box"
 [domain]
@@ -39,17 +39,17 @@ end = 0.01
 dt = 0.01
 )toml";
 
-struct Disordered {
+struct DisorderedBox {
   Model model;
   std::vector<double> y;
   const FluidFields* f = nullptr;
 };
 
 // The lattice shaken by up to 0.2 dx, fields refreshed at the shaken positions.
-Disordered disordered_box(const std::vector<std::string>& sets) {
+DisorderedBox disordered_box(const std::vector<std::string>& sets) {
   std::ostringstream warnings;
-  const Scene scene = read_scene_text(kBox, "<test>", sets, warnings);
-  Disordered d{build_model(scene), {}, nullptr};
+  const Scene scene = read_scene_text(kDivergenceBox, "<test>", sets, warnings);
+  DisorderedBox d{build_model(scene), {}, nullptr};
   RhsEvaluator& rhs = *d.model.rhs;
   d.y.resize(rhs.layout().size());
   rhs.initial_state(d.y.data());
@@ -62,7 +62,7 @@ Disordered disordered_box(const std::vector<std::string>& sets) {
   return d;
 }
 
-std::vector<double> random_vector(std::size_t n, unsigned seed) {
+std::vector<double> random_values(std::size_t n, unsigned seed) {
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<double> v(n);
@@ -72,12 +72,12 @@ std::vector<double> random_vector(std::size_t n, unsigned seed) {
 }  // namespace
 
 TEST_CASE("divergence operator: difference-form divergence with reflected wall images") {
-  const Disordered d = disordered_box({});
+  const DisorderedBox d = disordered_box({});
   const FluidFields& f = *d.f;
   DivergenceOperator op;
   op.assemble(f);
   const std::size_t n = f.n_real;
-  const auto u = random_vector(n, 1), v = random_vector(n, 2);
+  const auto u = random_values(n, 1), v = random_values(n, 2);
   std::vector<double> div(n);
   op.divergence(u.data(), v.data(), div.data());
   // Brute force: (D u)_a = sum_b V_b (R_b u_src(b) - u_a) . grad_a W_ab, pair by pair.
@@ -106,12 +106,12 @@ TEST_CASE("divergence operator: difference-form divergence with reflected wall i
 }
 
 TEST_CASE("divergence operator: G is the negative adjoint of D, K is symmetric and K = -V D G") {
-  const Disordered d = disordered_box({});
+  const DisorderedBox d = disordered_box({});
   const FluidFields& f = *d.f;
   DivergenceOperator op;
   op.assemble(f);
   const std::size_t n = f.n_real;
-  const auto u = random_vector(n, 3), v = random_vector(n, 4), p = random_vector(n, 5);
+  const auto u = random_values(n, 3), v = random_values(n, 4), p = random_values(n, 5);
   std::vector<double> div(n), gx(n), gy(n);
   op.divergence(u.data(), v.data(), div.data());
   op.gradient(p.data(), gx.data(), gy.data());
@@ -141,7 +141,7 @@ TEST_CASE("divergence operator: G is the negative adjoint of D, K is symmetric a
 // that the null space of K (odd-even modes) is handled exactly. Tolerance 1e-10: the pseudo-inverse
 // of K, whose condition number on the shaken lattice is about 1e5, times round-off.
 TEST_CASE("divergence operator: the exact projection is idempotent and leaves D u = 0") {
-  const Disordered d = disordered_box({});
+  const DisorderedBox d = disordered_box({});
   const FluidFields& f = *d.f;
   DivergenceOperator op;
   op.assemble(f);
@@ -160,7 +160,7 @@ TEST_CASE("divergence operator: the exact projection is idempotent and leaves D 
       v[a] -= gy[a];
     }
   };
-  std::vector<double> u = random_vector(n, 6), v = random_vector(n, 7);
+  std::vector<double> u = random_values(n, 6), v = random_values(n, 7);
   double norm = 0;
   for (std::size_t a = 0; a < n; ++a) norm += u[a] * u[a] + v[a] * v[a];
   project(u, v);
@@ -183,10 +183,10 @@ TEST_CASE("divergence operator: the exact projection is idempotent and leaves D 
 
 // The fused source of the constrained projection, D w - Q in one pass, against its two parts.
 TEST_CASE("divergence operator: the fused source D w - Q equals its parts") {
-  const Disordered d = disordered_box({});
+  const DisorderedBox d = disordered_box({});
   const FluidFields& f = *d.f;
   const std::size_t n = f.n_real;
-  const auto wx = random_vector(n, 8), wy = random_vector(n, 9), u = random_vector(n, 10), v = random_vector(n, 11);
+  const auto wx = random_values(n, 8), wy = random_values(n, 9), u = random_values(n, 10), v = random_values(n, 11);
   std::vector<double> fused(n), div(n);
   divergence_minus_motion(f, wx.data(), wy.data(), u.data(), v.data(), fused.data());
   difference_divergence(f, wx.data(), wy.data(), div.data());

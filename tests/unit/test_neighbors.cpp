@@ -24,7 +24,7 @@ namespace {
 // rounding of a number of size 1: ~2e-16. Coordinates and r^2 are O(1): absolute 1e-14. w and f are
 // compared relative to their own scale (W(0) and max |f|), since a shift of r by delta changes them
 // by ~ delta / h relative to that scale (< 1e-14 for h >= 0.01).
-constexpr double kPosTol = 1e-14;
+constexpr double kNeighborPosTol = 1e-14;
 constexpr double kKernelTol = 1e-14;
 
 struct Pair {
@@ -93,8 +93,8 @@ std::size_t compare_with_brute(const std::vector<double>& x, const std::vector<d
       const double r = std::sqrt(expect[m].r2);
       double w, f;
       k.eval(r, w, f);
-      if (std::abs(g.rx - expect[m].rx) > kPosTol || std::abs(g.ry - expect[m].ry) > kPosTol ||
-          std::abs(g.r2 - expect[m].r2) > kPosTol || std::abs(g.w - w) > kKernelTol * wscale ||
+      if (std::abs(g.rx - expect[m].rx) > kNeighborPosTol || std::abs(g.ry - expect[m].ry) > kNeighborPosTol ||
+          std::abs(g.r2 - expect[m].r2) > kNeighborPosTol || std::abs(g.w - w) > kKernelTol * wscale ||
           std::abs(g.f - f) > kKernelTol * fscale)
         ++bad_values;
     }
@@ -249,7 +249,7 @@ TEST_CASE("neighbors: periodic unit box through ghost images equals the minimum-
     std::size_t bad_ghost = 0;
     for (std::size_t q = 0; q < g.size(); ++q) {
       const double sx = g.x[q] - x[g.source[q]], sy = g.y[q] - y[g.source[q]];
-      const bool ok = std::abs(sx - std::round(sx)) < kPosTol && std::abs(sy - std::round(sy)) < kPosTol &&
+      const bool ok = std::abs(sx - std::round(sx)) < kNeighborPosTol && std::abs(sy - std::round(sy)) < kNeighborPosTol &&
                       std::abs(std::round(sx)) <= 1 && std::abs(std::round(sy)) <= 1 &&
                       (std::round(sx) != 0 || std::round(sy) != 0) &&
                       g.map[q] == std::array<double, 4>{1, 1, 0, 0} && g.div_map[q] == g.map[q];
@@ -301,7 +301,7 @@ TEST_CASE("neighbors: periodic unit box through ghost images equals the minimum-
       }
       for (std::size_t m = 0; m < got.size(); ++m) {
         const Found &p = got[m], &e = expect[m];
-        if (std::abs(p.rx - e.rx) > kPosTol || std::abs(p.ry - e.ry) > kPosTol || std::abs(p.r2 - e.r2) > kPosTol ||
+        if (std::abs(p.rx - e.rx) > kNeighborPosTol || std::abs(p.ry - e.ry) > kNeighborPosTol || std::abs(p.r2 - e.r2) > kNeighborPosTol ||
             std::abs(p.w - e.w) > kKernelTol * wscale || std::abs(p.f - e.f) > kKernelTol * fscale)
           ++bad_values;
       }

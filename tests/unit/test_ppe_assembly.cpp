@@ -343,7 +343,8 @@ Eigen::VectorXcd eigenvalues(const Eigen::MatrixXd& p) { return Eigen::EigenSolv
 // surface rows, neighbour-based below: velocity_correction.hpp) leaves no pattern growing. The
 // tolerances 1e-9: the dense eigen-solver's round-off on a 960 x 960 map with entries of order 1;
 // the check that can fail is the renormalised one's, off by 0.019.
-TEST_CASE("ppe assembly: the projection map at a free surface is non-expansive with its gradient, not with the renormalised one") {
+TEST_CASE("ppe assembly: the projection map at a free surface is non-expansive with its gradient, not with the renormalised one" *
+          doctest::test_suite("asan_slow")) {
   const Scene scene = surface_scene();
   Model model = build_model(scene);
   FluidFields f = channel_with_surface(model);

@@ -30,7 +30,7 @@ spacing = 0.1
 end = 1.0
 )s";
 
-Scene read(const std::string& text, const std::vector<std::string>& sets = {},
+Scene read_text(const std::string& text, const std::vector<std::string>& sets = {},
            std::ostream* warnings = nullptr) {
   std::ostringstream sink;
   return read_scene_text(text, "test.toml", sets, warnings ? *warnings : sink);
@@ -155,7 +155,7 @@ TEST_CASE("scene: the embedded default is the Re = 100 cavity") {
 }
 
 TEST_CASE("scene: defaults fill every key but the required ones") {
-  const Scene s = read(kBase);
+  const Scene s = read_text(kBase);
   const Scene d = scene_defaults();
   CHECK(s.name == "unnamed");
   CHECK(s.directory == "runs/unnamed");
@@ -166,12 +166,12 @@ TEST_CASE("scene: defaults fill every key but the required ones") {
   CHECK(s.max_steps == d.max_steps);
   CHECK(s.sides[3].kind == SideKind::wall);
   // Integers are accepted for floats.
-  CHECK(read(replace(kBase, "end = 1.0", "end = 3")).end == 3.0);
+  CHECK(read_text(replace(kBase, "end = 1.0", "end = 3")).end == 3.0);
 }
 
 TEST_CASE("scene: --set overrides take effect") {
   const std::string def = default_scene_toml();
-  Scene s = read(def, {"time.end=2", "method.kernel=cubic_spline", "output.directory=runs/x y",
+  Scene s = read_text(def, {"time.end=2", "method.kernel=cubic_spline", "output.directory=runs/x y",
                        "fluid.body_force=[0, -9.81]", "boundary.top.velocity=[2, 0.5]",
                        "method.h_over_dx=1.5", "method.pressure_reduction=true"});
   CHECK(s.end == 2.0);
@@ -187,18 +187,18 @@ TEST_CASE("scene: --set overrides take effect") {
   for (const std::string& scheme : registered_names("scheme")) {
     if (scheme == "wcsph") continue;
     std::ostringstream warnings;
-    s = read(def, {"method.scheme=" + scheme}, &warnings);
+    s = read_text(def, {"method.scheme=" + scheme}, &warnings);
     CHECK(s.scheme == scheme);
     CHECK(warnings.str() == "test.toml: method.sound_speed: unused by scheme " + scheme + "\n");
   }
 
   // The default Poisson solver is chosen by size ("auto"); the exact operator, which is not
   // symmetric, resolves it to KLU instead (an explicit CG choice with it is an error: bad_scenes/).
-  CHECK(read(def, {"method.scheme=isph"}).ppe_solver == "auto");
-  CHECK(read(def, {"method.scheme=isph", "method.ppe_operator=exact"}).ppe_solver == "klu");
+  CHECK(read_text(def, {"method.scheme=isph"}).ppe_solver == "auto");
+  CHECK(read_text(def, {"method.scheme=isph", "method.ppe_operator=exact"}).ppe_solver == "klu");
 
   // Intermediate tables are created; the last --set of a key wins.
-  s = read(kBase, {"metrics.poiseuille=true", "fluid.body_force=[1, 0]", "boundary.left={ kind = \"periodic\" }",
+  s = read_text(kBase, {"metrics.poiseuille=true", "fluid.body_force=[1, 0]", "boundary.left={ kind = \"periodic\" }",
                    "boundary.right.kind=periodic", "time.end=4", "time.end=5"});
   CHECK(s.poiseuille);
   CHECK(s.sides[0].kind == SideKind::periodic);
@@ -209,7 +209,7 @@ TEST_CASE("scene: --set overrides take effect") {
 TEST_CASE("scene: resolved_toml reads back to the same Scene") {
   std::vector<Scene> scenes;
   scenes.push_back(read_scene_text(default_scene_toml(), "<embedded default>", {}));
-  scenes.push_back(read(kBase + R"s(
+  scenes.push_back(read_text(kBase + R"s(
 [scene]
 name = "two phases"
 [boundary]
@@ -231,7 +231,7 @@ scheme = "wcsph"
 tait_gamma = 1
 )s",
                         {"time.dt=1e-5", "time.rtol=3e-7", "output.every=0.1"}));
-  scenes.push_back(read(R"s(
+  scenes.push_back(read_text(R"s(
 [scene]
 dimension = 1
 [domain]
@@ -248,7 +248,7 @@ max_steps = 10
 )s"));
   for (const Scene& s : scenes) {
     CAPTURE(s.resolved_toml);
-    const Scene back = read(s.resolved_toml);
+    const Scene back = read_text(s.resolved_toml);
     check_same(s, back);
     CHECK(back.resolved_toml == s.resolved_toml);
   }
@@ -349,9 +349,9 @@ TEST_CASE("scene: bad input gives a one-line InputError naming the key") {
   };
   for (const Bad& c : cases) {
     CAPTURE(c.what);
-    CHECK_THROWS_AS(read(c.text, c.sets), InputError);
+    CHECK_THROWS_AS(read_text(c.text, c.sets), InputError);
     try {
-      read(c.text, c.sets);
+      read_text(c.text, c.sets);
     } catch (const InputError& e) {
       const std::string msg = e.what();
       CAPTURE(msg);
@@ -373,7 +373,7 @@ TEST_CASE("scene: integers beyond 2^53 are refused with their digits, not rounde
   for (const auto& [set, key] : bad) {
     CAPTURE(set);
     try {
-      read(kBase, {set});
+      read_text(kBase, {set});
       FAIL_CHECK("accepted");
     } catch (const InputError& e) {
       const std::string msg = e.what();
@@ -383,5 +383,5 @@ TEST_CASE("scene: integers beyond 2^53 are refused with their digits, not rounde
     }
   }
   // 2^53 itself is exact.
-  CHECK(read(kBase, {"fluid.viscosity=9007199254740992"}).viscosity == 9007199254740992.0);
+  CHECK(read_text(kBase, {"fluid.viscosity=9007199254740992"}).viscosity == 9007199254740992.0);
 }

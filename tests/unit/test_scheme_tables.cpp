@@ -35,14 +35,14 @@ ppe_tolerance = 1e-7
 cfl = 0.125
 )s";
 
-Scene read(const std::string& text, const std::vector<std::string>& sets = {}) {
+Scene read_tables(const std::string& text, const std::vector<std::string>& sets = {}) {
   std::ostringstream sink;
   return read_scene_text(text, "test.toml", sets, sink);
 }
 
 std::string message_of(const std::string& text, const std::vector<std::string>& sets = {}) {
   try {
-    read(text, sets);
+    read_tables(text, sets);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -53,14 +53,14 @@ std::string message_of(const std::string& text, const std::vector<std::string>& 
 
 TEST_CASE("for_scheme: the table of the scheme that runs applies, the others do not") {
   // wcsph (the default scheme): its table replaces [method]'s kernel and pins the regularisation.
-  const Scene w = read(kScene);
+  const Scene w = read_tables(kScene);
   CHECK(w.scheme == "wcsph");
   CHECK(w.kernel == "cubic_spline");
   CHECK(w.regularisation == "none");
   CHECK(w.cfl != 0.125);  // isph's [time] table not applied
 
   // isph by --set: its own table, and the regularisation left at auto is resolved by its rule.
-  const Scene i = read(kScene, {"method.scheme=isph"});
+  const Scene i = read_tables(kScene, {"method.scheme=isph"});
   CHECK(i.kernel == "quintic_spline");
   CHECK(i.ppe_tolerance == 1e-7);
   CHECK(i.cfl == 0.125);
@@ -68,18 +68,18 @@ TEST_CASE("for_scheme: the table of the scheme that runs applies, the others do 
   CHECK(i.regularisation != "auto");
 
   // A scheme without a table: the scene's own keys.
-  const Scene g = read(kScene, {"method.scheme=isph-gpps"});
+  const Scene g = read_tables(kScene, {"method.scheme=isph-gpps"});
   CHECK(g.kernel == "wendland_quintic");
   CHECK(g.regularisation == i.regularisation);  // both resolved by the same rule for a walled box at rest
 }
 
 TEST_CASE("for_scheme: --set wins over the scheme's table, and the resolved scene has no table") {
-  const Scene s = read(kScene, {"method.kernel=quartic_spline", "method.regularisation=shifting"});
+  const Scene s = read_tables(kScene, {"method.kernel=quartic_spline", "method.regularisation=shifting"});
   CHECK(s.kernel == "quartic_spline");
   CHECK(s.regularisation == "shifting");
   CHECK(s.resolved_toml.find("for_scheme") == std::string::npos);
   // The resolved scene holds the values the table gave.
-  const Scene back = read(read(kScene).resolved_toml);
+  const Scene back = read_tables(read_tables(kScene).resolved_toml);
   CHECK(back.kernel == "cubic_spline");
   CHECK(back.regularisation == "none");
 }
@@ -118,7 +118,7 @@ TEST_CASE("for_scheme: bad tables give one line naming the key") {
 
 TEST_CASE("for_scheme: a bad value is checked when its scheme runs, and named with its table") {
   const std::string text = kScene + "[for_scheme.isph-gpps.method]\nppe_tolerance = 5\n";
-  CHECK_NOTHROW(read(text));  // wcsph runs: the isph-gpps value is not read
+  CHECK_NOTHROW(read_tables(text));  // wcsph runs: the isph-gpps value is not read
   const std::string msg = message_of(text, {"method.scheme=isph-gpps"});
   CAPTURE(msg);
   CHECK(msg.find("test.toml (for_scheme.isph-gpps): method.ppe_tolerance") != std::string::npos);

@@ -19,7 +19,7 @@ using namespace arksph;
 using arksph::testing::fields_at_start;
 
 namespace {
-const char* kBox = R"toml(
+const char* kWallForceBox = R"toml(
 [scene]
 name = "wall_force"
 [domain]
@@ -37,9 +37,9 @@ density_diffusion = "none"
 end = 0.01
 )toml";
 
-Scene box(std::vector<std::string> sets) {
+Scene wall_box(std::vector<std::string> sets) {
   std::ostringstream warnings;
-  return read_scene_text(kBox, "<test>", sets, warnings);
+  return read_scene_text(kWallForceBox, "<test>", sets, warnings);
 }
 
 // du/dt, dv/dt of the real particles at t = 0, and their positions.
@@ -87,7 +87,7 @@ TEST_CASE("wall force: the Lennard-Jones acceleration equals a brute-force sum o
   for (auto* sets : {&with, &without}) sets->push_back("boundary.wall_ghosts=false");
   with.push_back("boundary.wall_force=lennard_jones");
   with.push_back("boundary.wall_force_strength=0.7");
-  const Accelerations on = evaluate(box(with)), off = evaluate(box(without));
+  const Accelerations on = evaluate(wall_box(with)), off = evaluate(wall_box(without));
   REQUIRE(on.x.size() == 400);
   CHECK(on.ghosts == 0);  // no wall images
   const auto pts = boundary_particles(r0);
@@ -113,8 +113,8 @@ TEST_CASE("wall force: the Lennard-Jones acceleration equals a brute-force sum o
 }
 
 TEST_CASE("wall force: the undisturbed lattice feels no wall force, and the ghosts are there by default") {
-  const Accelerations on = evaluate(box({"boundary.wall_force=lennard_jones", "boundary.wall_force_strength=5"}));
-  const Accelerations off = evaluate(box({}));
+  const Accelerations on = evaluate(wall_box({"boundary.wall_force=lennard_jones", "boundary.wall_force_strength=5"}));
+  const Accelerations off = evaluate(wall_box({}));
   CHECK(on.ghosts > 0);
   CHECK(on.ghosts == off.ghosts);
   double worst = 0;
@@ -128,7 +128,7 @@ TEST_CASE("wall force: the undisturbed lattice feels no wall force, and the ghos
 TEST_CASE("wall force: walls without ghosts need wcsph") {
   for (const char* scheme : {"isph", "isph-gpps"}) {
     try {
-      box({"boundary.wall_ghosts=false", std::string("method.scheme=") + scheme});
+      wall_box({"boundary.wall_ghosts=false", std::string("method.scheme=") + scheme});
       FAIL("accepted boundary.wall_ghosts=false with " << scheme);
     } catch (const InputError& e) {
       const std::string what = e.what();

@@ -13,7 +13,7 @@ using namespace arksph;
 
 namespace {
 // Channel periodic in x, walls at y = 0 (moving at 0.7) and y = 1, 20 x 20 particles.
-const std::string kChannel = R"toml(
+const std::string kWallParticlesChannel = R"toml(
 [scene]
 name = "wall_particles"
 [domain]
@@ -44,7 +44,7 @@ struct OnWall {
 
 OnWall points_on_walls(const std::vector<std::string>& sets) {
   std::ostringstream w;
-  const Scene scene = read_scene_text(kChannel, "test", sets, w);
+  const Scene scene = read_scene_text(kWallParticlesChannel, "test", sets, w);
   Model model = build_model(scene);
   std::vector<double> y(model.rhs->layout().size()), ydot(y.size());
   model.rhs->initial_state(y.data());

@@ -15,7 +15,7 @@ using namespace arksph;
 namespace {
 // Channel periodic in x, walls at y = 0 and 1, 20 x 20 particles, u = 4 y (1 - y): the analytic
 // continuation behind the walls is the same parabola.
-const std::string kChannel = R"toml(
+const std::string kWallVelocityChannel = R"toml(
 [scene]
 name = "wall_velocity"
 [domain]
@@ -52,7 +52,7 @@ GhostError ghost_error(const std::string& mode, const std::vector<std::string>& 
   std::ostringstream w;
   std::vector<std::string> sets = {"boundary.wall_velocity=" + mode};
   sets.insert(sets.end(), extra.begin(), extra.end());
-  const Scene scene = read_scene_text(kChannel, "test", sets, w);
+  const Scene scene = read_scene_text(kWallVelocityChannel, "test", sets, w);
   Model model = build_model(scene);
   std::vector<double> y(model.rhs->layout().size()), ydot(y.size());
   model.rhs->initial_state(y.data());

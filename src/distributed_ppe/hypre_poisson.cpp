@@ -22,7 +22,11 @@ namespace {
 // BoomerAMG as one V-cycle preconditioner for PCG on a 2D or 3D Laplacian over several ranks
 // (hypre's reference manual, "BoomerAMG" and the parallel settings of its examples).
 constexpr int kCoarsenHmis = 10;         // HMIS coarsening (De Sterck, Yang & Heys 2006)
-constexpr int kInterpExtI = 6;           // extended+i interpolation, the partner of HMIS
+// Extended+e interpolation in matrix-matrix form (hypre's type 18), a distance-two interpolation
+// as the extended+i (type 6) that hypre recommends beside HMIS, built from sparse matrix products:
+// on the Re = 1000 cavity's matrix on 2 ranks the same iterations (7-9) for a set-up in 0.60-0.65
+// of type 6's time (N = 57,600 and 490,000; bench/RESULTS.md "hypre: interpolation").
+constexpr int kInterpExtEMatrix = 18;
 constexpr int kInterpMaxElements = 4;    // truncation of interpolation rows (operator complexity)
 constexpr double kStrongThreshold = 0.25;  // strength of connection for 2D Laplacians
 // Smoother: Chebyshev polynomials in D^-1 A (hypre's default order 2, on the upper part of the
@@ -294,7 +298,7 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
       check(HYPRE_BoomerAMGCreate(&h->amg), "BoomerAMGCreate");
       HYPRE_BoomerAMGSetPrintLevel(h->amg, 0);
       HYPRE_BoomerAMGSetCoarsenType(h->amg, kCoarsenHmis);
-      HYPRE_BoomerAMGSetInterpType(h->amg, kInterpExtI);
+      HYPRE_BoomerAMGSetInterpType(h->amg, kInterpExtEMatrix);
       HYPRE_BoomerAMGSetPMaxElmts(h->amg, kInterpMaxElements);
       HYPRE_BoomerAMGSetStrongThreshold(h->amg, kStrongThreshold);
       HYPRE_BoomerAMGSetRelaxType(h->amg, kRelaxChebyshev);

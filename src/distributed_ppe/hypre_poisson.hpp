@@ -1,7 +1,7 @@
 // The distributed pressure Poisson solve: the rows of all ranks (ppe_rows.hpp) as one hypre ParCSR
 // matrix (each rank its contiguous block of rows, written in place), solved by conjugate gradients
 // (hypre PCG) preconditioned by one BoomerAMG V-cycle (classical AMG, Ruge & Stueben 1987; HMIS
-// coarsening and extended+i interpolation, De Sterck, Yang & Heys 2006, as hypre recommends for 2D
+// coarsening, De Sterck, Yang & Heys 2006, with a distance-two interpolation, as hypre recommends for 2D
 // and 3D problems on several ranks; Chebyshev smoothing, hypre_poisson.cpp). The matrix is the one-process "cg_amg"/"klu" matrix, symmetric
 // positive definite with the pinned unknown.
 //

@@ -64,7 +64,12 @@ HYPRE_BigInt big(GlobalRow r) {
   return static_cast<HYPRE_BigInt>(r);
 }
 
-// A ParCSR matrix or vector, destroyed on every path out.
+}  // namespace
+
+// A ParCSR matrix or vector, destroyed on every path out. (A named namespace: HyprePoisson's
+// Hierarchy holds a Matrix.)
+namespace parcsr {
+
 struct Matrix {
   hypre_ParCSRMatrix* A = nullptr;
   Matrix() = default;
@@ -96,6 +101,14 @@ struct Pcg {
     if (s) HYPRE_ParCSRPCGDestroy(s);
   }
 };
+
+}  // namespace parcsr
+
+namespace {
+
+using parcsr::Matrix;
+using parcsr::Pcg;
+using parcsr::Vector;
 
 // This rank's rows [lo, lo + n) of a matrix of `total` rows, and the vector over them with `values`.
 void make_vector(MPI_Comm comm, HYPRE_BigInt lo, std::size_t n, HYPRE_BigInt total, const double* values, Vector& out) {
@@ -226,7 +239,7 @@ void make_matrices(MPI_Comm comm, const LocalRows& rows, HYPRE_BigInt lo, double
 // points at it until a solve passes another); `m_next`: the matrix the next V-cycles run on.
 struct HyprePoisson::Hierarchy {
   HYPRE_Solver amg = nullptr;
-  Matrix M;
+  parcsr::Matrix M;
   hypre_ParCSRMatrix* m_next = nullptr;
   bool set_up = false;  // whether PCG's preconditioner set-up builds the hierarchy
   ~Hierarchy() {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/file_text.hpp"
 #include "run/setup.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "rhs/terms.hpp"
@@ -54,12 +55,7 @@ struct ScratchDir {
 };
 
 // The whole file as a string (empty if it cannot be read).
-inline std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+inline std::string slurp(const std::string& path) { return file_text(path); }
 
 // The number of lines of a text (its newlines): one-line messages are a contract (exit codes).
 inline int count_lines(const std::string& s) {

@@ -24,12 +24,7 @@ using Outcome = arksph::testing::CliOutcome;
 Outcome run_arksph(const std::string& args) { return arksph::testing::run_cli(args); }
 
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file(const fs::path& p) { return arksph::file_text(p); }
 
 // Reads a number after "key": in summary.json.
 double json_number(const std::string& json, const std::string& key) {

@@ -44,6 +44,9 @@ constexpr int kMaxReuse = 25;     // ... or after this many solves
 // The preconditioner's matrix: the rows without their off-diagonal entries below this fraction of
 // the largest one (make_matrices), lumped into the diagonal. kDropBelow: see the header.
 constexpr double kDropBelow = 0.05;
+// ... and its diagonal kept at least this fraction of the matrix's (a row whose every entry is
+// dropped would otherwise lose its diagonal): cg_amg's rule (projection/poisson/amg_hierarchy.hpp).
+constexpr double kKeptDiagonal = 0.5;
 // A solve on a kept hierarchy that ends above this many times the tolerance is repeated on a new one.
 constexpr double kRetryAbove = 2.0;
 
@@ -226,6 +229,7 @@ void make_matrices(MPI_Comm comm, const LocalRows& rows, HYPRE_BigInt lo, double
       }
       if (!kept) wm.diagonal += v;
     }
+    wm.diagonal = std::max(wm.diagonal, kKeptDiagonal * wa.diagonal);
     wa.end_row(a);
     wm.end_row(a);
   }

@@ -270,3 +270,46 @@ TEST_CASE("amg: sparsify drops small entries into the diagonal, symmetric, row s
   CHECK(s.ptr[s.n] + dropped == A.ptr[A.n]);
   CHECK(s.ptr[s.n] <= 0.6 * A.ptr[A.n]);
 }
+
+// A row whose every off-diagonal entry is below the sparsification's scale: an unknown coupled to
+// the rest by one entry 1e-3 of the largest (a spray particle at the edge of one neighbour's
+// support). Lumped, its row sum, zero, would become its diagonal, and cg_amg stopped with "matrix
+// diagonal not positive" (seen in the ISPH dam break after the impact). The diagonal is kept at
+// kPreconditionerKeptDiagonal of A's instead, and the solve gives KLU's pressure (1e-8 of its largest
+// value, as the first test here).
+TEST_CASE("amg: a row that sparsify would empty keeps a positive diagonal, and cg_amg solves its system") {
+  const PoissonSystem sys = system_of(scene_of(kWalledBox, {"fluid.spacing=0.02"}));
+  const long n = sys.A.rows();
+  double largest = 0;
+  for (long c = 0; c < sys.A.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(sys.A, c); it; ++it)
+      if (it.row() != it.col()) largest = std::max(largest, std::abs(it.value()));
+  const double eps = 1e-3 * largest;
+  const long neighbour = n / 2;
+  std::vector<Eigen::Triplet<double>> t;
+  for (long c = 0; c < sys.A.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(sys.A, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  t.emplace_back(neighbour, neighbour, eps);
+  t.emplace_back(n, n, eps);
+  t.emplace_back(n, neighbour, -eps);
+  t.emplace_back(neighbour, n, -eps);
+  SparseMatrix A(n + 1, n + 1);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  std::vector<double> b(sys.b.begin(), sys.b.end());
+  b.push_back(0.5 * b[static_cast<std::size_t>(neighbour)]);
+
+  CsrOwned S;
+  sparsify(csr_view(A), kPreconditionerDropBelow, S);
+  const CsrRef s = S.ref();
+  REQUIRE(s.ptr[n + 1] - s.ptr[n] == 1);  // the weak entry dropped: the diagonal alone
+  CHECK(s.col[s.ptr[n]] == n);
+  CHECK(s.val[s.ptr[n]] == doctest::Approx(kPreconditionerKeptDiagonal * eps).epsilon(1e-14));
+
+  std::vector<double> p_klu(b.size(), 0.0), p_amg(b.size(), 0.0);
+  make_poisson_solver("klu", 1e-12)->solve(A, b, p_klu);
+  const SolveReport r = make_poisson_solver("cg_amg", 1e-12)->solve(A, b, p_amg);
+  MESSAGE("cg_amg iterations ", r.iterations);
+  CHECK(r.relative_residual < 1e-11);
+  CHECK(relative_difference(p_amg, p_klu) <= 1e-8);
+}

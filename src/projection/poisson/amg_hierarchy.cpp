@@ -156,7 +156,7 @@ void sparsify(const CsrRef& A, double fraction, CsrOwned& out) {
   out.val.reserve(static_cast<std::size_t>(A.ptr[A.n]));
   for (int i = 0; i < A.n; ++i) {
     std::size_t at_diagonal = out.col.size();
-    double lumped = 0;
+    double lumped = 0, diagonal = 0;
     bool has_diagonal = false;
     for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k) {
       if (A.col[k] != i && std::abs(A.val[k]) < drop) {
@@ -166,6 +166,7 @@ void sparsify(const CsrRef& A, double fraction, CsrOwned& out) {
       if (A.col[k] == i) {
         at_diagonal = out.col.size();
         has_diagonal = true;
+        diagonal = A.val[k];
       }
       out.col.push_back(A.col[k]);
       out.val.push_back(A.val[k]);
@@ -176,7 +177,8 @@ void sparsify(const CsrRef& A, double fraction, CsrOwned& out) {
       out.col.insert(pos, i);
       out.val.insert(out.val.begin() + static_cast<std::ptrdiff_t>(at_diagonal), 0.0);
     }
-    if (lumped != 0) out.val[at_diagonal] += lumped;
+    if (lumped != 0)
+      out.val[at_diagonal] = std::max(out.val[at_diagonal] + lumped, kPreconditionerKeptDiagonal * diagonal);
     out.ptr[static_cast<std::size_t>(i) + 1] = static_cast<int>(out.col.size());
   }
 }

@@ -452,23 +452,29 @@ FrameSource RankProcess::frame_source(double t) {
 }
 
 // The rows go to each rank's piece (output.pieces, rank 0 writing the index naming them), or are
-// joined on rank 0 into one file; the wall points (output.walls) likewise. At the first frame (the next evaluation is at the same state)
-// and the last (none follows), rank 0 frees its evaluator's storage before the join, so that it
-// holds either, not both: a list built anew at the same positions sums the same pairs in the same
-// order, whereas a rebuild at another time would not.
+// joined on rank 0 into one file; the wall points (output.walls) likewise. At the first frame (the
+// next evaluation is at the same state) and the last (none follows), the rank that writes rows
+// (every rank with pieces, rank 0 otherwise) copies its own and frees its evaluator's storage
+// before it writes or joins them, so that it holds either, not both: a list built anew at the same
+// positions sums the same pairs in the same order, whereas a rebuild at another time would not.
 void RankProcess::write_rows(const FrameDiagnostics& diag, const StepStats& st, const Frame& mine, const Frame* walls,
                              RunOutput* out) {
   std::optional<JoinedFrame> whole;
   std::optional<JoinedWalls> all_walls;  // output.walls, joined on rank 0 (without pieces)
+  const bool first_or_last = mine.time <= 0 || mine.time >= scene_.end;
   if (write_frames_ && pieces_) {
     const int number = static_cast<int>(comm_.max(static_cast<std::int64_t>(out ? out->frames() : 0)));
-    together([&] {
-      write_vtp(scene_.directory + "/" + piece_file_name(number, comm_.rank()), FrameInIdOrder(mine).frame());
-      if (walls) write_vtp(scene_.directory + "/" + piece_file_name(number, comm_.rank(), "walls"), *walls);
-    });
+    if (walls)
+      together([&] { write_vtp(scene_.directory + "/" + piece_file_name(number, comm_.rank(), "walls"), *walls); });
+    const FrameInIdOrder rows(mine, first_or_last);
+    if (first_or_last) {
+      f_->release_storage();
+      return_free_memory();
+    }
+    together([&] { write_vtp(scene_.directory + "/" + piece_file_name(number, comm_.rank()), rows.frame()); });
   } else if (write_frames_) {
     if (walls) all_walls.emplace(comm_, *walls);
-    if (root_ && (mine.time <= 0 || mine.time >= scene_.end)) {
+    if (root_ && first_or_last) {
       const JoinedFrame::Copy own(mine);
       f_->release_storage();
       return_free_memory();

@@ -6,11 +6,12 @@
 
 namespace arksph {
 
-FrameInIdOrder::FrameInIdOrder(const Frame& f) : view_(f) {
-  if (!f.id || std::is_sorted(f.id, f.id + f.n)) return;
+FrameInIdOrder::FrameInIdOrder(const Frame& f, bool copy) : view_(f) {
+  const bool sorted = !f.id || std::is_sorted(f.id, f.id + f.n);
+  if (sorted && !copy) return;
   std::vector<std::size_t> order(f.n);  // row k shows particle order[k]
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return f.id[a] < f.id[b]; });
+  if (!sorted) std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return f.id[a] < f.id[b]; });
   static constexpr const double* Frame::*kFields[] = {&Frame::x,        &Frame::y,       &Frame::u,
                                                       &Frame::v,        &Frame::pressure, &Frame::density,
                                                       &Frame::summation_density, &Frame::mass};
@@ -22,9 +23,11 @@ FrameInIdOrder::FrameInIdOrder(const Frame& f) : view_(f) {
     for (std::size_t k = 0; k < f.n; ++k) rows[k] = src[order[k]];
     view_.*field = rows.data();
   }
-  id_.resize(f.n);
-  for (std::size_t k = 0; k < f.n; ++k) id_[k] = f.id[order[k]];
-  view_.id = id_.data();
+  if (f.id) {
+    id_.resize(f.n);
+    for (std::size_t k = 0; k < f.n; ++k) id_[k] = f.id[order[k]];
+    view_.id = id_.data();
+  }
   if (f.kind) {
     kind_.resize(f.n);
     for (std::size_t k = 0; k < f.n; ++k) kind_[k] = f.kind[order[k]];

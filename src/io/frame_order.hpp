@@ -10,10 +10,12 @@
 namespace arksph {
 
 // A copy of a frame's arrays with the rows sorted by id (frame() views them). If the rows are in id
-// order already, nothing is copied and frame() is the original view.
+// order already, nothing is copied and frame() is the original view, unless a copy is asked for.
 class FrameInIdOrder {
  public:
-  explicit FrameInIdOrder(const Frame& f);
+  // copy: the rows are the object's own even when f is already in id order (f's arrays may then
+  // be freed before frame() is written).
+  explicit FrameInIdOrder(const Frame& f, bool copy = false);
   const Frame& frame() const { return view_; }
 
  private:

@@ -1,67 +1,46 @@
 #include "distributed/halo_viscous_split.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <memory>
 
 #include "integrate/dependency_pattern.hpp"
 #include "integrate/viscous_jacobian.hpp"
 
 namespace arksph::distributed {
 
+namespace {
+// A rank's HaloRhs as the split's source: its own particles' f, the halo's velocities from their
+// owners, the ranks' agreement.
+class HaloSource final : public SplitSource {
+ public:
+  HaloSource(HaloRhs& f, const RankParticles& mine, const parallel::Communicator& comm)
+      : f_(f), mine_(mine), comm_(comm) {}
+  StateLayout layout() const override { return mine_.layout(); }
+  void eval(double t, const double* y, double* ydot) override { f_.eval(t, y, ydot); }
+  void implicit_part(double* ydot_i) override { f_.implicit_part(ydot_i); }
+  void viscous_acceleration(const double* u, const double* v, double* au, double* av) override {
+    f_.viscous_acceleration(u, v, au, av);
+  }
+  long builds() const override { return f_.builds(); }
+  bool everywhere(bool local) const override { return -comm_.max(-static_cast<std::int64_t>(local)) > 0; }
+
+ private:
+  HaloRhs& f_;
+  const RankParticles& mine_;
+  const parallel::Communicator& comm_;
+};
+
+HaloRhs& switched_to_split(HaloRhs& f) {
+  f.set_imex_split(true);
+  return f;
+}
+}  // namespace
+
 HaloViscousSplit::HaloViscousSplit(const Scene& scene, HaloRhs& f, const RankParticles& mine,
                                    const parallel::Communicator& comm)
-    : f_(f), mine_(mine), comm_(comm) {
-  f_.set_imex_split(true);
+    : SplitCache(std::make_unique<HaloSource>(switched_to_split(f), mine, comm)), f_(f), mine_(mine) {
   radius_ = viscous_dependency_radius(scene, f_.evaluator().ghost_depth());
-}
-
-// True when y matches the cached state on every row outside the velocity block.
-bool HaloViscousSplit::frozen_equal(const double* y) const {
-  const StateLayout L = mine_.layout();
-  if (y_.size() != L.size()) return false;
-  const std::size_t v0 = L.vel(0), v1 = L.vel(0) + static_cast<std::size_t>(L.dim) * L.n;
-  return std::equal(y, y + v0, y_.begin()) && std::equal(y + v1, y + L.size(), y_.begin() + static_cast<long>(v1));
-}
-
-bool HaloViscousSplit::cached(const double* y) const {
-  return everywhere(valid_ && builds_ == f_.builds() && frozen_equal(y));
-}
-
-void HaloViscousSplit::evaluate_at(double t, const double* y) {
-  const std::size_t N = mine_.layout().size();
-  fe_.resize(N);
-  fi_.resize(N);
-  f_.eval(t, y, fe_.data());
-  f_.implicit_part(fi_.data());
-  if (constraint_) {
-    const StateLayout L = mine_.layout();
-    constraint_(y, fe_.data(), fi_.data() + L.vel(0), fi_.data() + L.vel(1));
-  }
-  y_.assign(y, y + N);
-  t_ = t;
-  builds_ = f_.builds();
-  valid_ = true;
-}
-
-void HaloViscousSplit::explicit_rhs(double t, const double* y, double* ydot) {
-  const std::size_t N = mine_.layout().size();
-  const bool same = valid_ && builds_ == f_.builds() && t == t_ && y_.size() == N && std::equal(y, y + N, y_.begin());
-  if (!everywhere(same)) evaluate_at(t, y);
-  std::copy(fe_.begin(), fe_.end(), ydot);
-}
-
-void HaloViscousSplit::implicit_rhs(double t, const double* y, double* ydot) {
-  const StateLayout L = mine_.layout();
-  if (cached(y)) {  // only velocities differ: the viscous terms over the frozen fields
-    au_.resize(L.n);
-    av_.resize(L.n);
-    f_.viscous_acceleration(y + L.vel(0), y + L.vel(1), au_.data(), av_.data());
-    std::fill(ydot, ydot + L.size(), 0.0);
-    std::copy(au_.begin(), au_.end(), ydot + L.vel(0));
-    std::copy(av_.begin(), av_.end(), ydot + L.vel(1));
-    return;
-  }
-  evaluate_at(t, y);
-  std::copy(fi_.begin(), fi_.end(), ydot);
 }
 
 // The fields at the frozen part of y, and the affine part (zero velocities, halo included).

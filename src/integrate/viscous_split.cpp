@@ -4,60 +4,80 @@
 
 namespace arksph {
 
-ViscousSplit::ViscousSplit(const Scene& scene, RhsEvaluator& rhs) : rhs_(rhs), jac_(scene, rhs) {
-  RhsOptions split = rhs_.options();
-  split.imex_split = true;
-  rhs_.set_options(split);
-}
-
-// True when y matches ref on every row outside the velocity block.
-bool ViscousSplit::frozen_equal(const double* y, const std::vector<double>& ref) const {
-  if (ref.empty()) return false;
-  const StateLayout& L = rhs_.layout();
+bool SplitCache::frozen_equal(const double* y, const std::vector<double>& ref) const {
+  const StateLayout L = f_->layout();
+  if (ref.size() != L.size()) return false;
   const std::size_t v0 = L.vel(0), v1 = L.vel(0) + static_cast<std::size_t>(L.dim) * L.n;
   return std::equal(y, y + v0, ref.begin()) && std::equal(y + v1, y + L.size(), ref.begin() + static_cast<long>(v1));
 }
 
-void ViscousSplit::evaluate_at(double t, const double* y) {
-  const std::size_t N = rhs_.layout().size();
+void SplitCache::evaluate_at(double t, const double* y) {
+  const StateLayout L = f_->layout();
+  const std::size_t N = L.size();
   fe_.resize(N);
-  rhs_.eval(t, y, fe_.data());
-  if (constraint_) {
-    const StateLayout& L = rhs_.layout();
-    fi_.resize(N);
-    rhs_.implicit_part(fi_.data());
-    constraint_(y, fe_.data(), fi_.data() + L.vel(0), L.dim == 2 ? fi_.data() + L.vel(1) : nullptr);
-  }
+  fi_.resize(N);
+  f_->eval(t, y, fe_.data());
+  f_->implicit_part(fi_.data());
+  if (constraint_) constraint_(y, fe_.data(), fi_.data() + L.vel(0), L.dim == 2 ? fi_.data() + L.vel(1) : nullptr);
   y_.assign(y, y + N);
   t_ = t;
+  builds_ = f_->builds();
   valid_ = true;
 }
 
-void ViscousSplit::explicit_rhs(double t, const double* y, double* ydot) {
-  if (!(valid_ && t == t_ && std::equal(y, y + y_.size(), y_.begin()))) evaluate_at(t, y);
+void SplitCache::explicit_rhs(double t, const double* y, double* ydot) {
+  const std::size_t N = f_->layout().size();
+  const bool same = valid_ && builds_ == f_->builds() && t == t_ && y_.size() == N && std::equal(y, y + N, y_.begin());
+  if (!f_->everywhere(same)) evaluate_at(t, y);
   std::copy(fe_.begin(), fe_.end(), ydot);
 }
 
-void ViscousSplit::implicit_rhs(double t, const double* y, double* ydot) {
-  const StateLayout& L = rhs_.layout();
-  if (valid_ && frozen_equal(y, y_)) {  // only velocities differ: the viscous terms over the frozen fields
-    const std::size_t n = L.n;
-    au_.resize(n), av_.resize(n);
+void SplitCache::implicit_rhs(double t, const double* y, double* ydot) {
+  const StateLayout L = f_->layout();
+  if (cached(y)) {  // only velocities differ: the viscous terms over the frozen fields
+    au_.resize(L.n);
+    av_.resize(L.n);
     const double* u = y + L.vel(0);
-    const double* v = L.dim == 2 ? y + L.vel(1) : u;
-    rhs_.viscous_acceleration(u, v, au_.data(), av_.data());
+    f_->viscous_acceleration(u, L.dim == 2 ? y + L.vel(1) : u, au_.data(), av_.data());
     std::fill(ydot, ydot + L.size(), 0.0);
     std::copy(au_.begin(), au_.end(), ydot + L.vel(0));
     if (L.dim == 2) std::copy(av_.begin(), av_.end(), ydot + L.vel(1));
     return;
   }
   evaluate_at(t, y);
-  rhs_.implicit_part(ydot);
+  std::copy(fi_.begin(), fi_.end(), ydot);
 }
+
+namespace {
+// One process's evaluator as the split's source.
+class EvaluatorSource final : public SplitSource {
+ public:
+  explicit EvaluatorSource(RhsEvaluator& rhs) : rhs_(rhs) {}
+  StateLayout layout() const override { return rhs_.layout(); }
+  void eval(double t, const double* y, double* ydot) override { rhs_.eval(t, y, ydot); }
+  void implicit_part(double* ydot_i) override { rhs_.implicit_part(ydot_i); }
+  void viscous_acceleration(const double* u, const double* v, double* au, double* av) override {
+    rhs_.viscous_acceleration(u, v, au, av);
+  }
+
+ private:
+  RhsEvaluator& rhs_;
+};
+
+RhsEvaluator& switched_to_split(RhsEvaluator& rhs) {
+  RhsOptions split = rhs.options();
+  split.imex_split = true;
+  rhs.set_options(split);
+  return rhs;
+}
+}  // namespace
+
+ViscousSplit::ViscousSplit(const Scene& scene, RhsEvaluator& rhs)
+    : SplitCache(std::make_unique<EvaluatorSource>(switched_to_split(rhs))), rhs_(rhs), jac_(scene, rhs) {}
 
 const SparseCsr& ViscousSplit::jacobian(double t, const double* y) {
   if (jac_last_ && frozen_equal(y, jac_y_)) return *jac_last_;  // same frozen state: same J
-  if (!(valid_ && frozen_equal(y, y_))) evaluate_at(t, y);     // fields at the frozen part of y
+  if (!cached(y)) evaluate_at(t, y);                             // fields at the frozen part of y
   jac_last_ = &jac_.evaluate();
   jac_y_.assign(y, y + rhs_.layout().size());
   return *jac_last_;

@@ -7,8 +7,13 @@
 // at a given state. During a stage solve only the velocities change, so f_I there is one pass of
 // the viscous terms over the frozen fields (RhsEvaluator::viscous_acceleration), and J is
 // re-probed only when the frozen part of the state (positions, densities, energies) has changed.
+//
+// SplitCache holds that caching over a SplitSource: one process's evaluator (ViscousSplit below,
+// which assembles J for KLU), or a rank's evaluation over its halo in a decomposed run
+// (distributed/halo_viscous_split.hpp, J as an operator for a Krylov solve).
 #pragma once
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/scene.hpp"
@@ -18,15 +23,29 @@
 
 namespace arksph {
 
-class ViscousSplit {
+// The evaluation a split caches: f of the particles this process integrates.
+class SplitSource {
  public:
-  // Switches rhs to the split evaluation (RhsOptions::imex_split).
-  ViscousSplit(const Scene& scene, RhsEvaluator& rhs);
+  virtual ~SplitSource() = default;
+  virtual StateLayout layout() const = 0;  // of the state integrated here
+  // The whole f (f_E with RhsOptions::imex_split), then f_I of that evaluation.
+  virtual void eval(double t, const double* y, double* ydot) = 0;
+  virtual void implicit_part(double* ydot_i) = 0;
+  // f_I's acceleration for the velocities (u, v) of this process's particles at the frozen fields
+  // of the last eval (v, av unused in 1D).
+  virtual void viscous_acceleration(const double* u, const double* v, double* au, double* av) = 0;
+  // Changes when the source builds its particle set anew (a rank's halo exchange): an evaluation
+  // cached before then does not serve.
+  virtual long builds() const { return 0; }
+  // Whether `local` holds on every process (collective over ranks).
+  virtual bool everywhere(bool local) const { return local; }
+};
+
+class SplitCache {
+ public:
+  explicit SplitCache(std::unique_ptr<SplitSource> f) : f_(std::move(f)) {}
   void explicit_rhs(double t, const double* y, double* ydot);
   void implicit_rhs(double t, const double* y, double* ydot);
-  const SparseCsr& jacobian(double t, const double* y);
-  ImexFunctions functions();
-  const ViscousJacobian& jacobian_builder() const { return jac_; }
   // A constraint on f_E that must see the whole acceleration (the constrained projection): called
   // after each full evaluation as constraint(y, f_E, au_I, av_I) with f_I's acceleration.
   using Constraint = std::function<void(const double* y, double* fe, const double* au, const double* av)>;
@@ -34,27 +53,50 @@ class ViscousSplit {
     constraint_ = std::move(c);
     valid_ = false;
   }
+  // Drops the cached evaluation (the particles were re-ordered, migrated or dealt anew).
+  void forget() { valid_ = false; }
+
+ protected:
+  // Whether y matches ref on every row outside the velocity block.
+  bool frozen_equal(const double* y, const std::vector<double>& ref) const;
+  // Whether the cached evaluation holds the frozen fields of y (on every process).
+  bool cached(const double* y) const {
+    return f_->everywhere(valid_ && builds_ == f_->builds() && frozen_equal(y, y_));
+  }
+  void evaluate_at(double t, const double* y);
+  SplitSource& source() { return *f_; }
+
+ private:
+  std::unique_ptr<SplitSource> f_;
+  Constraint constraint_;
+  std::vector<double> y_, fe_, fi_;  // the state of the last full evaluation, its f_E and f_I
+  double t_ = 0;
+  bool valid_ = false;
+  long builds_ = -1;  // SplitSource::builds at that evaluation
+  std::vector<double> au_, av_;
+};
+
+// One process: the evaluator's split, and J = df_I/dy assembled for KLU.
+class ViscousSplit : public SplitCache {
+ public:
+  // Switches rhs to the split evaluation (RhsOptions::imex_split).
+  ViscousSplit(const Scene& scene, RhsEvaluator& rhs);
+  const SparseCsr& jacobian(double t, const double* y);
+  ImexFunctions functions();
+  const ViscousJacobian& jacobian_builder() const { return jac_; }
   // Drops every cached evaluation and the Jacobian pattern (the particles were re-ordered).
   void forget() {
-    valid_ = false;
+    SplitCache::forget();
     jac_last_ = nullptr;
     jac_y_.clear();
     jac_.invalidate();
   }
 
  private:
-  bool frozen_equal(const double* y, const std::vector<double>& ref) const;
-  void evaluate_at(double t, const double* y);
   RhsEvaluator& rhs_;
   ViscousJacobian jac_;
-  std::vector<double> y_, fe_;   // the state of the last full evaluation and its f_E
-  double t_ = 0;
-  bool valid_ = false;
-  std::vector<double> jac_y_;    // the state J was probed at (frozen rows matter)
+  std::vector<double> jac_y_;  // the state J was probed at (frozen rows matter)
   const SparseCsr* jac_last_ = nullptr;
-  std::vector<double> au_, av_;
-  Constraint constraint_;
-  std::vector<double> fi_;  // f_I of the last full evaluation (for the constraint)
 };
 
 }  // namespace arksph

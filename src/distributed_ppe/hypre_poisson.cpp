@@ -14,6 +14,7 @@
 
 #include "core/errors.hpp"
 #include "core/seconds_since.hpp"
+#include "projection/poisson/amg_hierarchy.hpp"
 
 namespace arksph::distributed_ppe {
 
@@ -42,11 +43,10 @@ constexpr int kRelaxChebyshev = 16;
 constexpr double kGrowth = 1.25;  // set up anew when iterations exceed this x the count after the last set-up
 constexpr int kMaxReuse = 25;     // ... or after this many solves
 // The preconditioner's matrix: the rows without their off-diagonal entries below this fraction of
-// the largest one (make_matrices), lumped into the diagonal. kDropBelow: see the header.
-constexpr double kDropBelow = 0.05;
-// ... and its diagonal kept at least this fraction of the matrix's (a row whose every entry is
-// dropped would otherwise lose its diagonal): cg_amg's rule (projection/poisson/amg_hierarchy.hpp).
-constexpr double kKeptDiagonal = 0.5;
+// the largest one (make_matrices), lumped into the diagonal, the diagonal kept at least the second
+// fraction of the matrix's: cg_amg's rule (projection/poisson/amg_hierarchy.hpp, sparsify).
+constexpr double kDropBelow = kPreconditionerDropBelow;
+constexpr double kKeptDiagonal = kPreconditionerKeptDiagonal;
 // A solve on a kept hierarchy that ends above this many times the tolerance is repeated on a new one.
 constexpr double kRetryAbove = 2.0;
 

@@ -64,7 +64,6 @@ class SplitCache {
     return f_->everywhere(valid_ && builds_ == f_->builds() && frozen_equal(y, y_));
   }
   void evaluate_at(double t, const double* y);
-  SplitSource& source() { return *f_; }
 
  private:
   std::unique_ptr<SplitSource> f_;

@@ -5,6 +5,8 @@
 #include <exception>
 #include <vector>
 
+#include "core/scheme.hpp"
+
 namespace arksph {
 
 namespace {
@@ -49,6 +51,13 @@ std::string failure_diagnosis(RhsEvaluator& rhs, const ParticleSet& particles, d
   } catch (const std::exception&) {
     return "";
   }
+}
+
+std::string known_limit(const Scene& scene) {
+  if (!scheme_traits(scene.scheme).projection || scene.fluid_region.empty()) return "";
+  return "; note: scheme " + scene.scheme +
+         " at a free surface is known to fail in violent flows (impacts on walls, spray: the dam break after "
+         "its surge strikes the far wall; docs/methods/free-surface.md), which method.scheme = \"wcsph\" runs";
 }
 
 }  // namespace arksph

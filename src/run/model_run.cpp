@@ -8,6 +8,7 @@
 #include "integrate/time_params.hpp"
 #include "projection/ppe_assembly.hpp"
 #include "run/cpu_time.hpp"
+#include "run/failure_diagnosis.hpp"
 #include "run/output_resume.hpp"
 #include "run/output_start.hpp"
 #include "run/particle_reorder.hpp"
@@ -241,6 +242,7 @@ void ModelRun::finish(RunResult& result, double wall, double stepping) {
   totals.diagnostic_evals = diagnostic_evals_;
   totals.wall_reflections = reflections();
   process_.report(totals);
+  if (result.exit_code == 3) result.message += known_limit(scene_);
   Verdict last{result.exit_code, result.message};
   if (out_) {
     try {

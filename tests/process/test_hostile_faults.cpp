@@ -220,7 +220,7 @@ top = { kind = "periodic" }
 }
 
 // A failed run of a projection scheme at a free surface names that known limit and the scheme that
-// runs such flows; the same failure under WCSPH does not. A column of 10 x 5 particles collapses
+// runs such flows; the same failure under WCSPH does not. A column 5 particles wide and 10 high collapses
 // under g = 1 and passes the bound 0.3 within t = 0.3 under either scheme.
 TEST_CASE("hostile runs: a failed ISPH run at a free surface names the known limit") {
   ScratchDir dir("known_limit");

@@ -16,13 +16,12 @@
 #include "core/seconds_since.hpp"
 #include "diagnostics/flow_metrics.hpp"
 #include "distributed/halo_rhs.hpp"
-#include "distributed/halo_viscous_split.hpp"
 #ifdef ARKSPH_WITH_HYPRE
 #include "distributed/halo_domain.hpp"
 #endif
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_frame.hpp"
-#include "distributed/rank_particles.hpp"
+#include "parallel/rank_particles.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "integrate/imex_integrator.hpp"
 #include "io/frame_order.hpp"
@@ -108,7 +107,7 @@ void check_distributable(const Scene& scene, int ranks) {
     if (scene.ppe_operator != PpeOperator::approximate)
       throw InputError(scene.source + ": method.ppe_operator = " + projection_options().ppe_operator.name(scene.ppe_operator) + on);
   }
-  // time.imex: ARKStep with the Krylov solve (distributed/halo_viscous_split.hpp); a projection
+  // time.imex: ARKStep with the Krylov solve (KrylovViscousSplit, integrate/viscous_split.hpp); a projection
   // is inside f_E there (the scene reader admits time.imex only with one).
   if (scene.dimension != 2)
     throw InputError(scene.source + ": domain dimension " + std::to_string(scene.dimension) + on);
@@ -224,7 +223,7 @@ class RankProcess final : public RunProcess {
   Model* model_ = nullptr;
   std::optional<parallel::CellGrid> grid_;
   std::optional<parallel::Decomposition> decomposition_;
-  std::optional<RankParticles> mine_;
+  std::optional<parallel::RankParticles> mine_;
   std::optional<HaloRhs> f_;
   double flow_ = 0;               // the flow rate the constrained projection's rates scale with
   std::vector<double> d0_by_id_;  // number density at t = 0 of every particle, by id
@@ -234,7 +233,7 @@ class RankProcess final : public RunProcess {
   std::vector<std::int64_t> pressure_ids_;  // the ids of the rank's particles at the last projection
   std::vector<double> frame_d0_, frame_x_, frame_y_, frame_p_;  // the frame's (frame_source)
   ErkOptions eo_;
-  std::optional<HaloViscousSplit> split_;  // time.imex
+  std::optional<KrylovViscousSplit> split_;  // time.imex
   TimeStepper stepper_;  // ERKStep, or ARKStep over split_ with time.imex
   ArkodeIntegrator& arkode() { return static_cast<ArkodeIntegrator&>(*stepper_.integrator); }
   long migrations_ = 0;
@@ -369,7 +368,7 @@ void RankProcess::start_integrator(double t, double h, const StepStats& counters
   eo_.initial_dt = h > 0 ? h : stable(y.data());
   if (scene_.imex) {  // after the evaluation above, whose acceleration is the whole f's, as one process's at t = 0
     if (!split_) {
-      split_.emplace(scene_, *f_, *mine_, comm_);
+      split_.emplace(scene_, split_source(*f_, *mine_, comm_), PeriodicAxes{});
       if (projection_ && projection_->constrained())  // the constrained projection inside f_E
         split_->set_constraint([this](const double* yy, double* fe, const double* au, const double* av) {
           projection_->constrain(yy, fe, au, av);

@@ -2,7 +2,7 @@
 // the set-up and run loop of run/model_run.hpp with the process strategy of one rank (RankProcess,
 // distributed_run.cpp; docs/parallel.md, "Runs over several ranks"):
 //   particles   the recursive coordinate bisection (parallel/rcb.hpp) of the particles per cell of
-//               side R deals each rank its own (rank_particles.hpp), sorted by cell as one process
+//               side R deals each rank its own (parallel/rank_particles.hpp), sorted by cell as one process
 //               sorts its own; at the sync points (method.reorder_every) they migrate to the owners
 //               of their positions by a new bisection, and the integrator is re-initialised there
 //   f(t, y)     over the rank's particles and their halo (halo_rhs.hpp); the state an MPIPlusX

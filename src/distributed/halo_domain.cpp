@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
-#include "distributed/halo_poisson.hpp"
+#include "distributed_ppe/halo_poisson.hpp"
 #include "parallel/agreement.hpp"
 
 namespace arksph::distributed {
@@ -73,7 +73,10 @@ CorrectionSpan HaloDomain::correction_span() const {
 std::unique_ptr<ParticlePoisson> HaloDomain::poisson(const Scene& scene, bool exact_operator) {
   if (exact_operator)
     throw InputError(scene.source + ": method.ppe_operator = \"exact\" runs on one process only");
-  return std::make_unique<HaloPoisson>(comm_, f_, owned_, pinned_id_, scene.ppe_tolerance);
+  HaloRhs& f = f_;
+  return std::make_unique<distributed_ppe::HaloPoisson>(
+      comm_, [&f](const std::vector<const std::vector<double>*>& own) { return f.halo_values(own); }, owned_, pinned_id_,
+      scene.ppe_tolerance);
 }
 
 }  // namespace arksph::distributed

@@ -10,7 +10,7 @@
 //   - cell_combine: the grid's cell sums and maxima all-reduced, so that every rank solves the whole
 //     grid problem (the grid is replicated: its memory and the all-reduce of 8 numbers a cell do not
 //     shrink with the rank count);
-//   - poisson: HaloPoisson, the PPE's rows with global numbers solved by hypre (halo_poisson.hpp),
+//   - poisson: HaloPoisson, the PPE's rows with global numbers solved by hypre (distributed_ppe/halo_poisson.hpp),
 //     one particle (a global id fixed for the run) pinned to P = 0, as one process pins its
 //     particle 0. With unequal particle volumes the Neumann system is only approximately consistent
 //     and the pinned particle shows in the solution at the level of the inconsistency
@@ -21,7 +21,7 @@
 #include <cstdint>
 
 #include "distributed/halo_rhs.hpp"
-#include "distributed/rank_particles.hpp"
+#include "parallel/rank_particles.hpp"
 #include "parallel/communicator.hpp"
 #include "projection/particle_domain.hpp"
 
@@ -30,7 +30,7 @@ namespace arksph::distributed {
 class HaloDomain : public ParticleDomain {
  public:
   // pinned_id: the global id of the particle whose pressure is pinned to 0 for the whole run.
-  HaloDomain(const parallel::Communicator& comm, HaloRhs& f, RankParticles& owned, std::int64_t pinned_id)
+  HaloDomain(const parallel::Communicator& comm, HaloRhs& f, parallel::RankParticles& owned, std::int64_t pinned_id)
       : comm_(comm), f_(f), owned_(owned), pinned_id_(pinned_id) {}
   StateLayout layout() const override { return owned_.layout(); }
   void refresh(double t, const double* y) override;
@@ -52,7 +52,7 @@ class HaloDomain : public ParticleDomain {
  private:
   const parallel::Communicator& comm_;
   HaloRhs& f_;
-  RankParticles& owned_;
+  parallel::RankParticles& owned_;
   std::int64_t pinned_id_;
 };
 

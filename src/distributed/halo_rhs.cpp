@@ -33,7 +33,7 @@ std::unique_ptr<RhsEvaluator> without_particles(const Scene& scene, const Model&
   return std::make_unique<RhsEvaluator>(scene, none, model.rhs->kernel(), terms_from_scene(scene, model.sound_speed));
 }
 
-HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, RankParticles& owned)
+HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, parallel::RankParticles& owned)
     : scene_(rank_scene(scene)),
       model_(model),
       comm_(comm),
@@ -41,7 +41,7 @@ HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communi
       radius_(model.rhs->kernel().radius()),
       skin_(kSkinFraction * radius_),
       cutoff_(kHaloSupports * radius_ + skin_) {
-  const RankFieldIndex& ix = owned.index();
+  const parallel::RankFieldIndex& ix = owned.index();
   for (int k = 0; k < ix.dim; ++k) update_fields_.push_back(ix.seen(k));
   for (int k = 0; k < ix.dim; ++k) update_fields_.push_back(ix.vel(k));
   if (ix.density) update_fields_.push_back(ix.rho());
@@ -59,7 +59,7 @@ void HaloRhs::set_decomposition(const parallel::Decomposition& decomposition) {
 void HaloRhs::exchange() {
   const auto t0 = std::chrono::steady_clock::now();
   parallel::ParticleFields& F = owned_.fields();
-  const RankFieldIndex& ix = owned_.index();
+  const parallel::RankFieldIndex& ix = owned_.index();
   const parallel::Domain& domain = decomposition_->grid().domain();
   const std::size_t n = F.size();
   parallel::Box mine = decomposition_->box(comm_.rank());
@@ -92,7 +92,7 @@ void HaloRhs::exchange() {
 // from RhsEvaluator::initial_state.
 void HaloRhs::build_evaluator() {
   const parallel::ParticleFields& F = owned_.fields();
-  const RankFieldIndex& ix = owned_.index();
+  const parallel::RankFieldIndex& ix = owned_.index();
   ParticleSet set;
   set.dim = ix.dim;
   set.n = F.size() + halo_.size();
@@ -186,7 +186,7 @@ std::vector<std::vector<double>> HaloRhs::halo_values(const std::vector<const st
 
 void HaloRhs::eval(double t, const double* y, double* ydot) {
   parallel::ParticleFields& F = owned_.fields();
-  const RankFieldIndex& ix = owned_.index();
+  const parallel::RankFieldIndex& ix = owned_.index();
   const std::size_t n = F.size();
   owned_.load(y);
   if (exchange_due_) {
@@ -241,6 +241,34 @@ void HaloRhs::eval(double t, const double* y, double* ydot) {
   for (std::size_t b = 0; b < blocks_.size(); ++b)
     std::copy_n(ydot_all_.begin() + static_cast<long>(b * L.n), n, ydot + b * n);
   seconds_.evaluator += seconds_since(t_eval);
+}
+
+namespace {
+class HaloSource final : public SplitSource {
+ public:
+  HaloSource(HaloRhs& f, const parallel::RankParticles& mine, const parallel::Communicator& comm)
+      : f_(f), mine_(mine), comm_(comm) {}
+  StateLayout layout() const override { return mine_.layout(); }
+  void eval(double t, const double* y, double* ydot) override { f_.eval(t, y, ydot); }
+  void implicit_part(double* ydot_i) override { f_.implicit_part(ydot_i); }
+  void viscous_acceleration(const double* u, const double* v, double* au, double* av) override {
+    f_.viscous_acceleration(u, v, au, av);
+  }
+  long builds() const override { return f_.builds(); }
+  bool everywhere(bool local) const override { return -comm_.max(-static_cast<std::int64_t>(local)) > 0; }
+  RhsEvaluator& evaluator() override { return f_.evaluator(); }
+
+ private:
+  HaloRhs& f_;
+  const parallel::RankParticles& mine_;
+  const parallel::Communicator& comm_;
+};
+}  // namespace
+
+std::unique_ptr<SplitSource> split_source(HaloRhs& f, const parallel::RankParticles& mine,
+                                          const parallel::Communicator& comm) {
+  f.set_imex_split(true);
+  return std::make_unique<HaloSource>(f, mine, comm);
 }
 
 }  // namespace arksph::distributed

@@ -29,7 +29,8 @@
 #include <vector>
 
 #include "core/scene.hpp"
-#include "distributed/rank_particles.hpp"
+#include "integrate/viscous_split.hpp"
+#include "parallel/rank_particles.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/rcb.hpp"
@@ -48,7 +49,7 @@ std::unique_ptr<RhsEvaluator> without_particles(const Scene& scene, const Model&
 
 class HaloRhs {
  public:
-  HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, RankParticles& owned);
+  HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, parallel::RankParticles& owned);
   // The decomposition the rank's particles were last migrated by; the next eval exchanges anew.
   void set_decomposition(const parallel::Decomposition& decomposition);
   // Collective. ydot = f(t, y) for this rank's particles (ydot null: the evaluator's fields only,
@@ -82,7 +83,7 @@ class HaloRhs {
   // send lists.
   std::vector<std::vector<double>> halo_values(const std::vector<const std::vector<double>*>& own) const;
   // time.imex (RhsOptions::imex_split) for this evaluator and those of later exchanges: eval's ydot
-  // holds f_E, implicit_part f_I (distributed/halo_viscous_split.hpp).
+  // holds f_E, implicit_part f_I (split_source below).
   void set_imex_split(bool on);
   // f_I of the last eval with the split, this rank's rows in its own layout (size y).
   void implicit_part(double* ydot_i);
@@ -104,13 +105,13 @@ class HaloRhs {
   const Scene scene_;  // rank_scene of the run's
   const Model& model_;
   const parallel::Communicator& comm_;
-  RankParticles& owned_;
+  parallel::RankParticles& owned_;
   const parallel::Decomposition* decomposition_ = nullptr;
   double radius_, skin_, cutoff_;
   parallel::HaloExchange exchange_;
   parallel::ParticleFields halo_;
   std::vector<int> update_fields_;           // sent at every eval
-  std::vector<int> blocks_;                  // RankFieldIndex::state_blocks(true)
+  std::vector<int> blocks_;                  // parallel::RankFieldIndex::state_blocks(true)
   std::vector<std::vector<double>> offset_;  // per axis: state position - seen position
   std::vector<std::vector<double>> ref_;     // per axis: seen positions at the exchange
   std::unique_ptr<RhsEvaluator> evaluator_;
@@ -125,5 +126,13 @@ class HaloRhs {
   long builds_ = 0;
   std::vector<double> own_u_, own_v_, all_u_, all_v_, all_au_, all_av_;  // scratch of viscous_acceleration
 };
+
+// time.imex on a rank: its f as the split's source (integrate/viscous_split.hpp), f_E and f_I of the
+// rank's particles with the split evaluation switched on, the halo copies' velocities from their
+// owners, and whether a cached evaluation serves agreed by the ranks (each evaluation is
+// collective). Its stages are solved by SPGMR over KrylovViscousSplit's operator (no periodic axes:
+// the halo copies carry the periodic images).
+std::unique_ptr<SplitSource> split_source(HaloRhs& f, const parallel::RankParticles& mine,
+                                          const parallel::Communicator& comm);
 
 }  // namespace arksph::distributed

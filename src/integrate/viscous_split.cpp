@@ -1,6 +1,8 @@
 #include "integrate/viscous_split.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <stdexcept>
 
 namespace arksph {
 
@@ -59,21 +61,22 @@ class EvaluatorSource final : public SplitSource {
   void viscous_acceleration(const double* u, const double* v, double* au, double* av) override {
     rhs_.viscous_acceleration(u, v, au, av);
   }
+  RhsEvaluator& evaluator() override { return rhs_; }
 
  private:
   RhsEvaluator& rhs_;
 };
+}  // namespace
 
-RhsEvaluator& switched_to_split(RhsEvaluator& rhs) {
+std::unique_ptr<SplitSource> evaluator_source(RhsEvaluator& rhs) {
   RhsOptions split = rhs.options();
   split.imex_split = true;
   rhs.set_options(split);
-  return rhs;
+  return std::make_unique<EvaluatorSource>(rhs);
 }
-}  // namespace
 
 ViscousSplit::ViscousSplit(const Scene& scene, RhsEvaluator& rhs)
-    : SplitCache(std::make_unique<EvaluatorSource>(switched_to_split(rhs))), rhs_(rhs), jac_(scene, rhs) {}
+    : SplitCache(evaluator_source(rhs)), rhs_(rhs), jac_(scene, rhs) {}
 
 const SparseCsr& ViscousSplit::jacobian(double t, const double* y) {
   if (jac_last_ && frozen_equal(y, jac_y_)) return *jac_last_;  // same frozen state: same J
@@ -88,6 +91,74 @@ ImexFunctions ViscousSplit::functions() {
   f.explicit_rhs = [this](double t, const double* y, double* yd) { explicit_rhs(t, y, yd); };
   f.implicit_rhs = [this](double t, const double* y, double* yd) { implicit_rhs(t, y, yd); };
   f.jacobian = [this](double t, const double* y) -> const SparseCsr& { return jacobian(t, y); };
+  return f;
+}
+
+KrylovViscousSplit::KrylovViscousSplit(const Scene& scene, std::unique_ptr<SplitSource> source, PeriodicAxes axes)
+    : SplitCache(std::move(source)), axes_(axes) {
+  if (scene.dimension != 2) throw std::logic_error("KrylovViscousSplit: 2D only");
+  radius_ = viscous_dependency_radius(scene, this->source().evaluator().ghost_depth());
+}
+
+// The fields at the frozen part of y, and the affine part (zero velocities at every point).
+void KrylovViscousSplit::linearize(double t, const double* y) {
+  if (!cached(y)) evaluate_at(t, y);
+  RhsEvaluator& rhs = source().evaluator();
+  const std::size_t all = rhs.layout().n;
+  pu_.assign(all, 0.0);
+  pv_.assign(all, 0.0);
+  bu_.resize(all);
+  bv_.resize(all);
+  rhs.viscous_acceleration(pu_.data(), pv_.data(), bu_.data(), bv_.data());
+}
+
+void KrylovViscousSplit::times(const double* v, double* Jv) {
+  const StateLayout L = source().layout();
+  au_.resize(L.n);
+  av_.resize(L.n);
+  source().viscous_acceleration(v + L.vel(0), v + L.vel(1), au_.data(), av_.data());
+  std::fill(Jv, Jv + L.size(), 0.0);
+  for (std::size_t a = 0; a < L.n; ++a) {
+    Jv[L.vel(0) + a] = au_[a] - bu_[a];
+    Jv[L.vel(1) + a] = av_[a] - bv_[a];
+  }
+}
+
+// Greedy distance-1 colouring of the evaluator's points over R_dep at the frozen positions; one
+// probe per colour and velocity component.
+void KrylovViscousSplit::diagonal(double* d) {
+  const StateLayout L = source().layout();
+  RhsEvaluator& rhs = source().evaluator();
+  const FluidFields& ff = rhs.fields();
+  const std::size_t all = rhs.layout().n;
+  const std::vector<std::vector<std::uint32_t>> near = dependency_pattern(ff.x.data(), ff.y.data(), all, radius_, axes_);
+  int colours = 0;
+  const std::vector<int> colour = greedy_colouring(near, false, colours);
+  std::fill(d, d + L.size(), 0.0);
+  qu_.resize(all);
+  qv_.resize(all);
+  for (int k = 0; k < 2; ++k)
+    for (int c = 0; c < colours; ++c) {
+      pu_.assign(all, 0.0);
+      pv_.assign(all, 0.0);
+      std::vector<double>& probe = k == 0 ? pu_ : pv_;
+      for (std::size_t j = 0; j < all; ++j)
+        if (colour[j] == c) probe[j] = 1.0;
+      rhs.viscous_acceleration(pu_.data(), pv_.data(), qu_.data(), qv_.data());
+      const std::vector<double>& q = k == 0 ? qu_ : qv_;
+      const std::vector<double>& b = k == 0 ? bu_ : bv_;
+      for (std::size_t a = 0; a < L.n; ++a)
+        if (colour[a] == c) d[L.vel(k) + a] = q[a] - b[a];
+    }
+}
+
+ImexFunctions KrylovViscousSplit::functions() {
+  ImexFunctions f;
+  f.explicit_rhs = [this](double t, const double* y, double* yd) { explicit_rhs(t, y, yd); };
+  f.implicit_rhs = [this](double t, const double* y, double* yd) { implicit_rhs(t, y, yd); };
+  f.krylov.linearize = [this](double t, const double* y) { linearize(t, y); };
+  f.krylov.times = [this](const double* v, double* Jv) { times(v, Jv); };
+  f.krylov.diagonal = [this](double* d) { diagonal(d); };
   return f;
 }
 

@@ -8,15 +8,18 @@
 // the viscous terms over the frozen fields (RhsEvaluator::viscous_acceleration), and J is
 // re-probed only when the frozen part of the state (positions, densities, energies) has changed.
 //
-// SplitCache holds that caching over a SplitSource: one process's evaluator (ViscousSplit below,
-// which assembles J for KLU), or a rank's evaluation over its halo in a decomposed run
-// (distributed/halo_viscous_split.hpp, J as an operator for a Krylov solve).
+// SplitCache holds that caching over a SplitSource: one process's evaluator, or a rank's evaluation
+// over its halo in a decomposed run (distributed/halo_rhs.hpp). J = df_I/dy comes in two forms:
+// ViscousSplit assembles it for KLU (one process); KrylovViscousSplit applies it as an operator for
+// the Krylov solve of the stages (ImexKrylov), over any source (the ranks' form, which one process
+// can run too: the tests compare it with the assembled J).
 #pragma once
 #include <functional>
 #include <memory>
 #include <vector>
 
 #include "core/scene.hpp"
+#include "integrate/dependency_pattern.hpp"
 #include "integrate/imex_integrator.hpp"
 #include "integrate/viscous_jacobian.hpp"
 #include "rhs/evaluator.hpp"
@@ -39,7 +42,14 @@ class SplitSource {
   virtual long builds() const { return 0; }
   // Whether `local` holds on every process (collective over ranks).
   virtual bool everywhere(bool local) const { return local; }
+  // The evaluator of the last eval: its points are this process's particles first, then (on a
+  // rank) the copies of other ranks' particles.
+  virtual RhsEvaluator& evaluator() = 0;
 };
+
+// One process's evaluator as a split's source, switched to the split evaluation
+// (RhsOptions::imex_split).
+std::unique_ptr<SplitSource> evaluator_source(RhsEvaluator& rhs);
 
 class SplitCache {
  public:
@@ -64,6 +74,7 @@ class SplitCache {
     return f_->everywhere(valid_ && builds_ == f_->builds() && frozen_equal(y, y_));
   }
   void evaluate_at(double t, const double* y);
+  SplitSource& source() { return *f_; }
 
  private:
   std::unique_ptr<SplitSource> f_;
@@ -96,6 +107,34 @@ class ViscousSplit : public SplitCache {
   ViscousJacobian jac_;
   std::vector<double> jac_y_;  // the state J was probed at (frozen rows matter)
   const SparseCsr* jac_last_ = nullptr;
+};
+
+// J as an operator (2D), for ImexFunctions::krylov:
+//   J v   the viscous acceleration of the velocities of v minus that of zero velocities (the affine
+//         part: wall velocities), at the frozen fields of the stage (f_I is affine in the
+//         velocities once positions, densities and kernel corrections are frozen); a rank's halo
+//         copies take their owners' entries of v (SplitSource::viscous_acceleration);
+//   diag  d_a = d(a_visc,a)/du_a, probed by a distance-1 colouring of the evaluator's points over
+//         the dependency radius R_dep (viscous_jacobian.hpp): with colour c set to 1 and every
+//         other velocity 0, particle a of colour c has no other point of colour c within R_dep,
+//         so its acceleration minus the affine part is its diagonal entry. The probes are the
+//         process's own (no communication): a halo copy's probe value need not be its owner's,
+//         since only the process's own rows are kept.
+class KrylovViscousSplit : public SplitCache {
+ public:
+  // axes: the periodic axes of the evaluator's positions (none on a rank, whose halo copies carry
+  // the periodic images).
+  KrylovViscousSplit(const Scene& scene, std::unique_ptr<SplitSource> source, PeriodicAxes axes);
+  void linearize(double t, const double* y);
+  void times(const double* v, double* Jv);
+  void diagonal(double* d);
+  ImexFunctions functions();
+
+ private:
+  PeriodicAxes axes_;
+  double radius_ = 0;                      // R_dep
+  std::vector<double> bu_, bv_, au_, av_;  // the affine part at the last linearize; scratch
+  std::vector<double> pu_, pv_, qu_, qv_;  // the diagonal's probes (every point of the evaluator)
 };
 
 }  // namespace arksph

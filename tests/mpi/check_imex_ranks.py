@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """time.imex over MPI ranks (label mpi): the stage systems solved by SPGMR over the ranks, matrix-free
-with Jacobi (integrate/imex_krylov.cpp, distributed/halo_viscous_split.hpp), against one process,
+with Jacobi (integrate/imex_krylov.cpp, integrate/viscous_split.hpp KrylovViscousSplit), against one process,
 whose stage systems KLU solves directly. Poiseuille (cases/poiseuille/scene.toml: no-slip walls with
 the linear wall velocity, periodic in x, nu = 1, where the viscous step limit is what IMEX removes)
 to t = END with time.imex_linear = true (one Newton iteration per stage, J at every stage: the

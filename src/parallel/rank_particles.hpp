@@ -1,10 +1,10 @@
-// The particles one rank of a decomposed run owns, as parallel::ParticleFields records (so that
+// The particles one rank of a decomposed run owns, as ParticleFields records (so that
 // migration and the halo move them whole), and their part of the ODE state.
 //
 // Fields of a record, for dimension d:
 //   [0, d)     position as the right-hand side sees it: the state's position brought into the box
 //              along the periodic axes at the last halo exchange, and moved with the state since
-//              (halo_rhs.hpp); migration wraps it (parallel/migration.hpp)
+//              (the halo's f, distributed/halo_rhs.hpp); migration wraps it (migration.hpp)
 //   [d, 2d)    position in the state vector (never wrapped: the state is that of a one-process run)
 //   [2d, 3d)   velocity
 //   then the density (when it is a state variable), the specific energy (likewise), and the
@@ -18,7 +18,7 @@
 #include "parallel/particle_fields.hpp"
 #include "parallel/rcb.hpp"
 
-namespace arksph::distributed {
+namespace arksph::parallel {
 
 struct RankFieldIndex {
   int dim = 2;
@@ -49,12 +49,12 @@ class RankParticles {
   // The particles of `all` (a whole model's particle set, state y in `layout`) whose position
   // `decomposition` gives to `rank`, in the order of `all`.
   RankParticles(const ParticleSet& all, const StateLayout& layout, const double* y,
-                const parallel::Decomposition& decomposition, int rank);
+                const Decomposition& decomposition, int rank);
 
   std::size_t size() const { return p_.size(); }
   const RankFieldIndex& index() const { return ix_; }
-  parallel::ParticleFields& fields() { return p_; }
-  const parallel::ParticleFields& fields() const { return p_; }
+  ParticleFields& fields() { return p_; }
+  const ParticleFields& fields() const { return p_; }
   // The layout of this rank's state vector.
   StateLayout layout() const;
   const std::vector<std::int64_t>& ids() const { return ids_; }
@@ -65,7 +65,7 @@ class RankParticles {
   void load(const double* y);
   // The seen positions: the state's wrapped into the box along the periodic axes (at a halo
   // exchange and before a migration).
-  void wrap_seen(const parallel::Domain& domain);
+  void wrap_seen(const Domain& domain);
   // After a migration: the ids follow the records.
   void refresh_ids();
   // The particles re-ordered by cell of side `side` (row-major from `lo`, core/particle_order.hpp)
@@ -77,8 +77,8 @@ class RankParticles {
  private:
   RankFieldIndex ix_;
   std::vector<int> blocks_;  // ix_.state_blocks(false)
-  parallel::ParticleFields p_;
+  ParticleFields p_;
   std::vector<std::int64_t> ids_;
 };
 
-}  // namespace arksph::distributed
+}  // namespace arksph::parallel

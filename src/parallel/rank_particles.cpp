@@ -1,18 +1,18 @@
-#include "distributed/rank_particles.hpp"
+#include "parallel/rank_particles.hpp"
 
 #include "core/particle_order.hpp"
 
-namespace arksph::distributed {
+namespace arksph::parallel {
 
 RankParticles::RankParticles(const ParticleSet& all, const StateLayout& layout, const double* y,
-                             const parallel::Decomposition& decomposition, int rank) {
+                             const Decomposition& decomposition, int rank) {
   ix_.dim = layout.dim;
   ix_.density = layout.has_density;
   ix_.energy = layout.has_energy;
   blocks_ = ix_.state_blocks(false);
-  p_ = parallel::ParticleFields(ix_.dim, ix_.count());
+  p_ = ParticleFields(ix_.dim, ix_.count());
   double x[3] = {0, 0, 0};
-  const parallel::Domain& domain = decomposition.grid().domain();
+  const Domain& domain = decomposition.grid().domain();
   for (std::size_t a = 0; a < layout.n; ++a) {
     for (int k = 0; k < ix_.dim; ++k) x[k] = y[layout.pos(k) + a];
     domain.wrap(x);
@@ -71,7 +71,7 @@ void RankParticles::sort_by_cell(const double* lo, double side) {
   refresh_ids();
 }
 
-void RankParticles::wrap_seen(const parallel::Domain& domain) {
+void RankParticles::wrap_seen(const Domain& domain) {
   double x[3] = {0, 0, 0};
   for (std::size_t a = 0; a < p_.size(); ++a) {
     for (int k = 0; k < ix_.dim; ++k) x[k] = p_.field[static_cast<std::size_t>(ix_.state_pos(k))][a];
@@ -82,4 +82,4 @@ void RankParticles::wrap_seen(const parallel::Domain& domain) {
 
 void RankParticles::refresh_ids() { ids_.assign(p_.id.begin(), p_.id.end()); }
 
-}  // namespace arksph::distributed
+}  // namespace arksph::parallel

@@ -21,7 +21,6 @@
 #endif
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_frame.hpp"
-#include "parallel/rank_particles.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "integrate/imex_integrator.hpp"
 #include "io/frame_order.hpp"
@@ -30,6 +29,7 @@
 #include "parallel/agreement.hpp"
 #include "parallel/join_by_id.hpp"
 #include "parallel/migration.hpp"
+#include "parallel/rank_particles.hpp"
 #include "parallel/rcb.hpp"
 #include "projection/correction/correction_solver.hpp"
 #include "projection/projection.hpp"

@@ -74,9 +74,8 @@ std::unique_ptr<ParticlePoisson> HaloDomain::poisson(const Scene& scene, bool ex
   if (exact_operator)
     throw InputError(scene.source + ": method.ppe_operator = \"exact\" runs on one process only");
   HaloRhs& f = f_;
-  return std::make_unique<distributed_ppe::HaloPoisson>(
-      comm_, [&f](const std::vector<const std::vector<double>*>& own) { return f.halo_values(own); }, owned_, pinned_id_,
-      scene.ppe_tolerance);
+  auto halo_values = [&f](const std::vector<const std::vector<double>*>& own) { return f.halo_values(own); };
+  return std::make_unique<distributed_ppe::HaloPoisson>(comm_, halo_values, owned_, pinned_id_, scene.ppe_tolerance);
 }
 
 }  // namespace arksph::distributed

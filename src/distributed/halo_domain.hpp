@@ -10,8 +10,8 @@
 //   - cell_combine: the grid's cell sums and maxima all-reduced, so that every rank solves the whole
 //     grid problem (the grid is replicated: its memory and the all-reduce of 8 numbers a cell do not
 //     shrink with the rank count);
-//   - poisson: HaloPoisson, the PPE's rows with global numbers solved by hypre (distributed_ppe/halo_poisson.hpp),
-//     one particle (a global id fixed for the run) pinned to P = 0, as one process pins its
+//   - poisson: HaloPoisson (distributed_ppe/halo_poisson.hpp), the PPE's rows with global numbers
+//     solved by hypre, one particle (a global id fixed for the run) pinned to P = 0, as one process pins its
 //     particle 0. With unequal particle volumes the Neumann system is only approximately consistent
 //     and the pinned particle shows in the solution at the level of the inconsistency
 //     (docs/parallel.md); one process's particle 0 changes with its re-sorts.
@@ -21,8 +21,8 @@
 #include <cstdint>
 
 #include "distributed/halo_rhs.hpp"
-#include "parallel/rank_particles.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/rank_particles.hpp"
 #include "projection/particle_domain.hpp"
 
 namespace arksph::distributed {

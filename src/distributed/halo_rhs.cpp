@@ -33,7 +33,8 @@ std::unique_ptr<RhsEvaluator> without_particles(const Scene& scene, const Model&
   return std::make_unique<RhsEvaluator>(scene, none, model.rhs->kernel(), terms_from_scene(scene, model.sound_speed));
 }
 
-HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm, parallel::RankParticles& owned)
+HaloRhs::HaloRhs(const Scene& scene, const Model& model, const parallel::Communicator& comm,
+                 parallel::RankParticles& owned)
     : scene_(rank_scene(scene)),
       model_(model),
       comm_(comm),

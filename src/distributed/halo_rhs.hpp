@@ -30,9 +30,9 @@
 
 #include "core/scene.hpp"
 #include "integrate/viscous_split.hpp"
-#include "parallel/rank_particles.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/halo.hpp"
+#include "parallel/rank_particles.hpp"
 #include "parallel/rcb.hpp"
 #include "rhs/evaluator.hpp"
 #include "run/setup.hpp"

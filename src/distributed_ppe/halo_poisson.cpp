@@ -8,7 +8,11 @@ namespace arksph::distributed_ppe {
 
 HaloPoisson::HaloPoisson(const parallel::Communicator& comm, HaloValues halo_values,
                          const parallel::RankParticles& owned, std::int64_t pinned_id, double tolerance)
-    : comm_(comm), halo_values_(std::move(halo_values)), owned_(owned), pinned_id_(pinned_id), solver_(comm, tolerance) {}
+    : comm_(comm),
+      halo_values_(std::move(halo_values)),
+      owned_(owned),
+      pinned_id_(pinned_id),
+      solver_(comm, tolerance) {}
 
 void HaloPoisson::reset() {
   numbered_ = false;

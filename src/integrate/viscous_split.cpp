@@ -131,7 +131,8 @@ void KrylovViscousSplit::diagonal(double* d) {
   RhsEvaluator& rhs = source().evaluator();
   const FluidFields& ff = rhs.fields();
   const std::size_t all = rhs.layout().n;
-  const std::vector<std::vector<std::uint32_t>> near = dependency_pattern(ff.x.data(), ff.y.data(), all, radius_, axes_);
+  const std::vector<std::vector<std::uint32_t>> near =
+      dependency_pattern(ff.x.data(), ff.y.data(), all, radius_, axes_);
   int colours = 0;
   const std::vector<int> colour = greedy_colouring(near, false, colours);
   std::fill(d, d + L.size(), 0.0);

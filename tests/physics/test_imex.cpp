@@ -168,7 +168,7 @@ double krylov_mismatch(const std::vector<std::string>& sets) {
 }
 }  // namespace
 
-TEST_CASE("imex: the matrix-free J v and diagonal of the ranks' Krylov solve equal the assembled J, every model and wall rule") {
+TEST_CASE("imex: the ranks' matrix-free J v and diagonal equal the assembled J, every model and wall rule") {
   const auto models = registered_names("viscosity_model"), rules = registered_names("wall_velocity");
   const auto corrections = registered_names("kernel_correction");
   REQUIRE(!models.empty());

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "distributed_ppe/hypre_poisson.hpp"
+#include "distributed_ppe/rank_poisson_solver.hpp"
 #include "ppe_fixture.hpp"
 #include "projection/poisson/poisson_solver.hpp"
 
@@ -49,7 +49,8 @@ std::vector<double> scaled_source(const OneProcessPpe& one, const std::vector<do
   return b;
 }
 
-void run(const Communicator& comm, OneProcessPpe& one, RankPpe& mine, const std::string& source, double tol) {
+void run(const Communicator& comm, OneProcessPpe& one, RankPpe& mine, const std::string& source, double tol,
+         const std::string& solver) {
   const std::size_t n = one.particles.n;
   std::vector<double> s(n);
   std::mt19937_64 rng(11);
@@ -61,7 +62,8 @@ void run(const Communicator& comm, OneProcessPpe& one, RankPpe& mine, const std:
   one.sys.b = scaled_source(one, s);
   for (std::size_t a = 0; a < mine.rows.size(); ++a) mine.rows.b[a] = one.sys.b[mine.index_of[a]];
 
-  distributed_ppe::HyprePoisson hypre(comm, tol);
+  const auto made = distributed_ppe::make_rank_poisson_solver(solver, comm, tol);
+  distributed_ppe::RankPoissonSolver& hypre = *made;
   double h_setup = 1e300, h_solve = 1e300, h_res = 0, h_again = 1e300;
   int h_its = 0, h_its_again = 0;
   for (int k = 0; k < kRepeats; ++k) {
@@ -100,10 +102,10 @@ void run(const Communicator& comm, OneProcessPpe& one, RankPpe& mine, const std:
     c_its_again = r2.iterations;
     c_res = r1.relative_residual;
   }
-  std::printf("%-7s N=%zu ranks=%d tol=%.0e | hypre: %d its, setup %.3f s, solve %.3f s, total %.3f s, residual %.1e,"
+  std::printf("%-7s N=%zu ranks=%d tol=%.0e | %s: %d its, setup %.3f s, solve %.3f s, total %.3f s, residual %.1e,"
               " hierarchy kept %.3f s (%d its)"
               " | cg_amg: %d its, setup+solve %.3f s, solve alone %.3f s (%d its), residual %.1e | ratio its %.2f\n",
-              source.c_str(), n, comm.size(), tol, h_its, h_setup, h_solve, h_setup + h_solve, h_res, h_again,
+              source.c_str(), n, comm.size(), tol, solver.c_str(), h_its, h_setup, h_solve, h_setup + h_solve, h_res, h_again,
               h_its_again, c_its, c_first, c_again, c_its_again, c_res, static_cast<double>(h_its) / c_its);
   std::fflush(stdout);
   comm.barrier();
@@ -127,7 +129,8 @@ int main(int argc, char** argv) {
     if (comm.rank() == 0)
       std::printf("N=%zu ranks=%d: rank set-up (halo, fields, rows) %.2f s, rows per rank %zu on rank 0\n", one.particles.n,
                   comm.size(), assembly, mine.rows.size());
-    for (const std::string source : {"random", "smooth"}) run(comm, one, mine, source, one.scene.ppe_tolerance);
+    for (const std::string solver : {"amg", "hypre"})
+      for (const std::string source : {"random", "smooth"}) run(comm, one, mine, source, one.scene.ppe_tolerance, solver);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "arksph_bench_hypre: %s\n", e.what());
     return 2;

@@ -2,7 +2,7 @@
 # Scaling of a decomposed run over MPI ranks (docs/scaling.md, bench/README.md).
 #
 #   bench/mpi_scaling.sh [--build DIR] [--out DIR] [--spacing DX] [--steps S] [--mpirun "CMD"]
-#                        [--scheme NAME] [--step F]
+#                        [--scheme NAME] [--step F] [--set KEY=VALUE ...]
 #
 # The doubly periodic box of bench/big_1e6.toml (Wendland C2, h = 2 dx, c = 10) with a vortex field
 # periodic on both the unit box and its lower half, u = (sin 2pi x cos 4pi y, -1/2 cos 2pi x sin 4pi y):
@@ -17,7 +17,7 @@
 # --scheme: method.scheme (default wcsph). Each runs to t = S * F * DX, F = --step (default 0.045:
 # about S steps of WCSPH's stability limit 0.25 h / (c + |u|); for isph the viscous limit
 # 0.125 h^2 / nu, F = 0.5 DX / nu: 0.07 at DX = 1/700), frames
-# only at t = 0 and the end. One rank is a plain process (no mpirun). Time per step: summary.json
+# only at t = 0 and the end. --set adds a scene key to every run. One rank is a plain process (no mpirun). Time per step: summary.json
 # timing.stepping (the steps alone: no set-up, frames or checkpoints) over the steps.
 # Memory: the largest resident set (one process: /usr/bin/time; ranks: summary.json
 # mpi.max_rss_kb, each rank's getrusage) over the particles of the rank.
@@ -31,6 +31,7 @@ steps=10
 scheme=wcsph
 step=0.045
 mpirun_cmd="mpirun --allow-run-as-root --oversubscribe"
+extra=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build=$2; shift 2 ;;
@@ -40,6 +41,7 @@ while [ $# -gt 0 ]; do
     --mpirun) mpirun_cmd=$2; shift 2 ;;
     --scheme) scheme=$2; shift 2 ;;
     --step) step=$2; shift 2 ;;
+    --set) extra+=(--set "$2"); shift 2 ;;
     -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
     *) echo "mpi_scaling.sh: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -50,7 +52,7 @@ scene=$here/big_1e6.toml
 mkdir -p "$out"
 end=$(python3 -c "print(repr($steps * $step * $spacing))")
 common=(--set "fluid.spacing=$spacing" --set "time.end=$end" --set "output.every=0" --quiet --overwrite
-        --set "method.scheme=$scheme"
+        --set "method.scheme=$scheme" "${extra[@]}"
         --set 'initial.velocity=["sin(2*pi*x)*cos(4*pi*y)", "-0.5*cos(2*pi*x)*sin(4*pi*y)"]')
 half=(--set 'domain.max=[1.0, 0.5]')
 

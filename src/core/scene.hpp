@@ -117,6 +117,7 @@ struct Scene {
   double ppe_pressure_offset;  // isph: constant added to P after the level (background pressure)
   std::optional<BodyForcePressure> body_force_pressure;  // isph: "modified" (P = p - rho0 g . r) | "split" (rhs/pressure_gravity.hpp)
   std::string ppe_solver;  // isph: "klu" | "cg" | "cg_ic" | "cg_amg" | "auto" (docs/methods/isph.md)
+  std::string rank_ppe_solver;  // isph over MPI ranks: "amg" | "hypre" | "auto" (distributed_ppe/rank_poisson_solver.hpp)
   double ppe_tolerance;  // isph, cg: relative residual
   double gpps_spacing;  // isph-gpps: auxiliary grid cell size (Szewc §4.2); 0: fluid.spacing
   double gpps_volume_relaxation;  // isph-gpps: beta of the cell-volume source term (0: off, Szewc's GPPS)

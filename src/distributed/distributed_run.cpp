@@ -1,5 +1,6 @@
 #include "distributed/distributed_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -21,6 +22,7 @@
 #endif
 #include "distributed/mpi_state_vector.hpp"
 #include "distributed/rank_frame.hpp"
+#include "distributed_ppe/rank_poisson_solver.hpp"
 #include "integrate/erk_integrator.hpp"
 #include "integrate/imex_integrator.hpp"
 #include "io/frame_order.hpp"
@@ -99,6 +101,10 @@ void check_distributable(const Scene& scene, int ranks) {
 #ifndef ARKSPH_WITH_HYPRE
     throw InputError(scene.source + ": scheme " + scene.scheme + " (this build has no hypre for the pressure solve)" + on);
 #endif
+    const std::vector<std::string> rank_solvers = distributed_ppe::rank_poisson_solver_names();
+    if (std::find(rank_solvers.begin(), rank_solvers.end(), scene.rank_ppe_solver) == rank_solvers.end())
+      throw InputError(scene.source + ": method.rank_ppe_solver = \"" + scene.rank_ppe_solver +
+                       "\" is not built in (this build has no hypre)");
     if (scene.projection == ProjectionMethod::orthogonal)
       throw InputError(scene.source + ": method.projection = " + projection_methods().name(scene.projection) + on);
     const auto* solver = correction_solvers().find(scene.correction_solver);
@@ -220,6 +226,8 @@ class RankProcess final : public RunProcess {
   const bool root_;
   const bool write_frames_;
   const bool pieces_;
+  // The solver of the projection's Poisson equation over the ranks (method.rank_ppe_solver).
+  const std::string rank_solver_ = scene_.rank_ppe_solver == "auto" ? "amg" : scene_.rank_ppe_solver;
   Model* model_ = nullptr;
   std::optional<parallel::CellGrid> grid_;
   std::optional<parallel::Decomposition> decomposition_;
@@ -251,8 +259,8 @@ void RankProcess::built(Model& model) {
     if (term.compare(0, imex_klu.size(), imex_klu) == 0) term = "imex:viscosity_implicit+spgmr_jacobi" + term.substr(imex_klu.size());
 #ifdef ARKSPH_WITH_HYPRE
   for (std::string& term : model.terms)
-    if (term == "projection:ppe-" + scene_.ppe_solver) term = "projection:ppe-hypre";
-    else if (term == "projection:constrained-ppe-" + scene_.ppe_solver) term = "projection:constrained-ppe-hypre";
+    if (term == "projection:ppe-" + scene_.ppe_solver) term = "projection:ppe-" + rank_solver_;
+    else if (term == "projection:constrained-ppe-" + scene_.ppe_solver) term = "projection:constrained-ppe-" + rank_solver_;
 #endif
 }
 
@@ -308,8 +316,10 @@ void RankProcess::make_projection() {
   if (scheme_traits(scene_.scheme).grid)
     std::printf("  pressure Poisson equation: on the grid (KLU), the cell sums of every rank's particles all-reduced\n");
   else
-    std::printf("  pressure Poisson equation: hypre PCG + BoomerAMG over the ranks, tolerance %g "
-                "(method.ppe_solver = %s applies to one process)\n", scene_.ppe_tolerance, scene_.ppe_solver.c_str());
+    std::printf("  pressure Poisson equation: %s over the ranks, tolerance %g "
+                "(method.ppe_solver = %s applies to one process)\n",
+                rank_solver_ == "hypre" ? "hypre PCG + BoomerAMG" : "CG + smoothed-aggregation AMG",
+                scene_.ppe_tolerance, scene_.ppe_solver.c_str());
   std::fflush(stdout);
 #endif
 }

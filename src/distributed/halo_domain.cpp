@@ -75,7 +75,9 @@ std::unique_ptr<ParticlePoisson> HaloDomain::poisson(const Scene& scene, bool ex
     throw InputError(scene.source + ": method.ppe_operator = \"exact\" runs on one process only");
   HaloRhs& f = f_;
   auto halo_values = [&f](const std::vector<const std::vector<double>*>& own) { return f.halo_values(own); };
-  return std::make_unique<distributed_ppe::HaloPoisson>(comm_, halo_values, owned_, pinned_id_, scene.ppe_tolerance);
+  return std::make_unique<distributed_ppe::HaloPoisson>(
+      comm_, halo_values, owned_, pinned_id_,
+      distributed_ppe::make_rank_poisson_solver(scene.rank_ppe_solver, comm_, scene.ppe_tolerance));
 }
 
 }  // namespace arksph::distributed

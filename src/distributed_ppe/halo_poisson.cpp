@@ -7,16 +7,17 @@
 namespace arksph::distributed_ppe {
 
 HaloPoisson::HaloPoisson(const parallel::Communicator& comm, HaloValues halo_values,
-                         const parallel::RankParticles& owned, std::int64_t pinned_id, double tolerance)
+                         const parallel::RankParticles& owned, std::int64_t pinned_id,
+                         std::unique_ptr<RankPoissonSolver> solver)
     : comm_(comm),
       halo_values_(std::move(halo_values)),
       owned_(owned),
       pinned_id_(pinned_id),
-      solver_(comm, tolerance) {}
+      solver_(std::move(solver)) {}
 
 void HaloPoisson::reset() {
   numbered_ = false;
-  solver_.invalidate();  // the hierarchy was set up on the old numbering
+  solver_->invalidate();  // the hierarchy was set up on the old numbering
 }
 
 SolveReport HaloPoisson::solve(const FluidFields& f, const std::vector<double>& source, double dt,
@@ -52,7 +53,7 @@ SolveReport HaloPoisson::solve(const FluidFields& f, const std::vector<double>& 
   }
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (p.size() != n) p.assign(n, 0.0);
-  return solver_.solve(rows_, p);
+  return solver_->solve(rows_, p);
 }
 
 }  // namespace arksph::distributed_ppe

@@ -2,24 +2,25 @@
 // rank of a decomposed run (the ParticlePoisson of a rank's domain, distributed/halo_domain.hpp), as
 // the projection, the fixed-point density correction and the constrained projection solve it: the
 // rows of the rank's particles with global numbers, the halo copies carrying their owners' rows
-// (ppe_rows.hpp), solved by hypre's BoomerAMG-preconditioned PCG (hypre_poisson.hpp) to
-// method.ppe_tolerance. The halo is the caller's: HaloValues gives the halo copies the values of
+// (ppe_rows.hpp), solved over the ranks by the solver method.rank_ppe_solver names
+// (rank_poisson_solver.hpp) to method.ppe_tolerance. The halo is the caller's: HaloValues gives the halo copies the values of
 // their owners (one all-to-all), in the order of the evaluator's points after the rank's own. The
 // equation of one particle (a global id fixed for the run) is replaced by P = 0; with rows of given
 // P (a free surface, set_given) those rows fix the level instead, and each halo copy takes its
 // owner's flag and value along the halo.
 //
 // The numbering holds while the rank's particles stay: reset() renumbers at the next solve and
-// starts hypre cold (a new hierarchy), as after a migration or a new deal.
+// starts the solver cold (a new preconditioner), as after a migration or a new deal.
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "distributed_ppe/hypre_poisson.hpp"
 #include "distributed_ppe/ppe_rows.hpp"
+#include "distributed_ppe/rank_poisson_solver.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/rank_particles.hpp"
 #include "projection/particle_domain.hpp"
@@ -32,12 +33,12 @@ using HaloValues = std::function<std::vector<std::vector<double>>(const std::vec
 class HaloPoisson : public ParticlePoisson {
  public:
   HaloPoisson(const parallel::Communicator& comm, HaloValues halo_values, const parallel::RankParticles& owned,
-              std::int64_t pinned_id, double tolerance);
+              std::int64_t pinned_id, std::unique_ptr<RankPoissonSolver> solver);
   // Collective. Solves L P = source / dt at the evaluator's current fields (f) for the rank's
   // particles (source: their values first). p: the warm start in (resized to the rank's count if it
   // is not), the pinned system's solution out (P = 0 at the pinned particle).
   SolveReport solve(const FluidFields& f, const std::vector<double>& source, double dt, std::vector<double>& p) override;
-  std::string name() const override { return "hypre-pcg-boomeramg"; }
+  std::string name() const override { return solver_->name() == "hypre" ? "hypre-pcg-boomeramg" : "rank-pcg-amg"; }
   // The rows of given P of the rank's particles (at least its owned count of flags and values), for
   // the next solves; empty: none.
   void set_given(DirichletRows given) override { given_ = std::move(given); }
@@ -49,7 +50,7 @@ class HaloPoisson : public ParticlePoisson {
   HaloValues halo_values_;
   const parallel::RankParticles& owned_;
   std::int64_t pinned_id_;
-  HyprePoisson solver_;
+  std::unique_ptr<RankPoissonSolver> solver_;
   bool numbered_ = false;
   RowRange range_;
   GlobalRow pinned_row_ = -1;

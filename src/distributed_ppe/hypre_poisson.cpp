@@ -39,16 +39,11 @@ constexpr double kStrongThreshold = 0.25;  // strength of connection for 2D Lapl
 // on 1, 2, 3 and 4 ranks) at 0.45-0.76 of its solve time on 2 ranks: fewer passes over the fine
 // matrix per cycle.
 constexpr int kRelaxChebyshev = 16;
-// Reuse of the hierarchy (the header), cg_amg's constants and measured choice.
-constexpr double kGrowth = 1.25;  // set up anew when iterations exceed this x the count after the last set-up
-constexpr int kMaxReuse = 25;     // ... or after this many solves
 // The preconditioner's matrix: the rows without their off-diagonal entries below this fraction of
 // the largest one (make_matrices), lumped into the diagonal, the diagonal kept at least the second
 // fraction of the matrix's: cg_amg's rule (projection/poisson/amg_hierarchy.hpp, sparsify).
 constexpr double kDropBelow = kPreconditionerDropBelow;
 constexpr double kKeptDiagonal = kPreconditionerKeptDiagonal;
-// A solve on a kept hierarchy that ends above this many times the tolerance is repeated on a new one.
-constexpr double kRetryAbove = 2.0;
 
 void check(HYPRE_Int err, const char* what) {
   if (err != 0) {
@@ -298,7 +293,7 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
       if (rows.col[static_cast<std::size_t>(k)] != rows.range.first + static_cast<GlobalRow>(a))
         largest = std::max(largest, std::abs(rows.val[static_cast<std::size_t>(k)]));
   largest = comm_.max(largest);
-  bool setup = !amg_ || must_setup_ || sums[1] > 0 || solves_since_setup_ >= kMaxReuse;
+  bool setup = !amg_ || must_setup_ || sums[1] > 0 || solves_since_setup_ >= kReuseMax;
   const MPI_Comm comm = comm_.comm();
   const HYPRE_BigInt lo = big(rows.range.first), total = big(rows.range.total);
 
@@ -370,7 +365,7 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
     // A kept hierarchy that no longer preconditions the moved particles' matrix (PCG stops on a
     // breakdown, far from the tolerance): set up anew on this matrix and solve again from the same
     // start. The residual is global, so every rank decides alike.
-    if (!setup && attempt == 0 && rep.relative_residual > kRetryAbove * tolerance_) {
+    if (!setup && attempt == 0 && rep.relative_residual > kReuseRetryAbove * tolerance_) {
       setup = true;
       std::copy(p.begin(), p.end(), x.data());
       continue;
@@ -378,7 +373,7 @@ HypreSolveReport HyprePoisson::solve(const LocalRows& rows, std::vector<double>&
     ++solves_since_setup_;
     if (baseline_ < 0)
       baseline_ = it;
-    else if (it > std::max(kGrowth * baseline_, baseline_ + 2.0))  // +2: not on noise of small counts
+    else if (it > std::max(kReuseGrowth * baseline_, baseline_ + 2.0))  // +2: not on noise of small counts
       must_setup_ = true;
     break;
   }

@@ -42,19 +42,18 @@
 #include <vector>
 
 #include "distributed_ppe/ppe_rows.hpp"
+#include "distributed_ppe/rank_poisson_solver.hpp"
 #include "parallel/communicator.hpp"
-#include "projection/poisson/poisson_solver.hpp"
 
 namespace arksph::distributed_ppe {
 
-struct HypreSolveReport : SolveReport {
-  double solve_seconds = 0;  // PCG iterations
-};
+using HypreSolveReport = RankSolveReport;
 
-class HyprePoisson {
+class HyprePoisson final : public RankPoissonSolver {
  public:
   HyprePoisson(const parallel::Communicator& comm, double tolerance);
-  ~HyprePoisson();
+  ~HyprePoisson() override;
+  std::string name() const override { return "hypre"; }
   HyprePoisson(const HyprePoisson&) = delete;
   HyprePoisson& operator=(const HyprePoisson&) = delete;
 
@@ -63,13 +62,13 @@ class HyprePoisson {
   // row). Throws NumericalFailure when hypre reports an error; a solve stopped by the iteration
   // limit (max(200, rows), as cg_amg) returns with its residual in the report, as cg_amg does.
   // rep.refactored_symbolic: BoomerAMG was set up for this solve.
-  HypreSolveReport solve(const LocalRows& rows, std::vector<double>& p);
+  HypreSolveReport solve(const LocalRows& rows, std::vector<double>& p) override;
   // BoomerAMG and the matrix it was set up on (public for PCG's preconditioner call-back).
   struct Hierarchy;
   // The next solve sets BoomerAMG up anew (call it on every rank).
-  void invalidate() { must_setup_ = true; }
+  void invalidate() override { must_setup_ = true; }
   // hypre's set-ups so far.
-  long setups() const { return setups_; }
+  long setups() const override { return setups_; }
 
  private:
   const parallel::Communicator& comm_;

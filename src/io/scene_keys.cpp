@@ -138,7 +138,11 @@ std::vector<Group> general_keys() {
             .doc("force terms share one neighbour gather per particle (no pair storage); same results")
             .to(&Scene::force_sweep),
         choice("method.ppe_solver", "auto").family("ppe_solver").doc("Poisson solver of the projection schemes")
-            .to(&Scene::ppe_solver)},
+            .to(&Scene::ppe_solver),
+        choice("method.rank_ppe_solver", "auto").choices({"auto", "amg", "hypre"})
+            .doc("Poisson solver of the projection schemes over MPI ranks: amg (CG with cg_amg's V-cycle, distributed), "
+                 "hypre (PCG with BoomerAMG); auto: amg")
+            .to(&Scene::rank_ppe_solver)},
        ""},
       {grid_projection_params(), "isph-gpps"},
       {projection_time_params(), "isph"},

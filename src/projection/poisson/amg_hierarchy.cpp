@@ -11,10 +11,9 @@ namespace arksph {
 
 namespace {
 constexpr int kParallelMin = kSolverParallelMin;
+}  // namespace
 
-// C = A B (A: A.n rows, B: ncols columns), columns unsorted within a row. Two passes (count, fill),
-// rows in parallel, one marker array per thread.
-CsrOwned multiply(const CsrRef& A, const CsrRef& B, int ncols) {
+CsrOwned csr_product(const CsrRef& A, const CsrRef& B, int ncols) {
   CsrOwned C;
   C.n = A.n;
   C.ptr.assign(static_cast<std::size_t>(A.n) + 1, 0);
@@ -61,7 +60,7 @@ CsrOwned multiply(const CsrRef& A, const CsrRef& B, int ncols) {
   return C;
 }
 
-CsrOwned transpose(const CsrRef& A, int ncols) {
+CsrOwned csr_transpose(const CsrRef& A, int ncols) {
   CsrOwned T;
   T.n = ncols;
   T.ptr.assign(static_cast<std::size_t>(ncols) + 1, 0);
@@ -79,7 +78,7 @@ CsrOwned transpose(const CsrRef& A, int ncols) {
   return T;
 }
 
-std::vector<double> inverse_diagonal(const CsrRef& A) {
+std::vector<double> csr_inverse_diagonal(const CsrRef& A) {
   std::vector<double> d(static_cast<std::size_t>(A.n), 0.0);
 #pragma omp parallel for schedule(static) if (A.n > kParallelMin)
   for (int i = 0; i < A.n; ++i)
@@ -93,6 +92,7 @@ std::vector<double> inverse_diagonal(const CsrRef& A) {
   return d;
 }
 
+namespace {
 // Largest eigenvalue of D^-1 A (similar to the SPD D^-1/2 A D^-1/2) by power iteration.
 double spectral_radius(const CsrRef& A, const std::vector<double>& inv_diag) {
   const std::size_t n = static_cast<std::size_t>(A.n);
@@ -142,12 +142,19 @@ CsrRef csr_view(const SparseMatrix& S) {
   return {static_cast<int>(S.rows()), S.outerIndexPtr(), S.innerIndexPtr(), S.valuePtr()};
 }
 
-void sparsify(const CsrRef& A, double fraction, CsrOwned& out) {
+double largest_off_diagonal(const CsrRef& A) {
   double largest = 0;
   for (int i = 0; i < A.n; ++i)
     for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
       if (A.col[k] != i) largest = std::max(largest, std::abs(A.val[k]));
-  const double drop = fraction * largest;
+  return largest;
+}
+
+void sparsify(const CsrRef& A, double fraction, CsrOwned& out) {
+  sparsify_below(A, fraction * largest_off_diagonal(A), out);
+}
+
+void sparsify_below(const CsrRef& A, double drop, CsrOwned& out) {
   out.n = A.n;
   out.ptr.assign(static_cast<std::size_t>(A.n) + 1, 0);
   out.col.clear();
@@ -213,7 +220,7 @@ void AmgHierarchy::setup(const CsrRef& A) {
 void AmgHierarchy::rebind_finest(const CsrRef& A) {
   if (A.n != A0_.n) throw std::logic_error("AmgHierarchy::rebind_finest: size changed");
   A0_ = A;
-  if (levels() > 1) inv_diag_[0] = inverse_diagonal(A);
+  if (levels() > 1) inv_diag_[0] = csr_inverse_diagonal(A);
 }
 
 void AmgHierarchy::build_level(int l, int nc) {
@@ -223,7 +230,7 @@ void AmgHierarchy::build_level(int l, int nc) {
     inv_diag_.resize(l + 1);
     rho_.resize(l + 1);
   }
-  inv_diag_[l] = inverse_diagonal(A);
+  inv_diag_[l] = csr_inverse_diagonal(A);
   rho_[l] = spectral_radius(A, inv_diag_[l]);
   CsrOwned P;  // tentative prolongator: piecewise constant on aggregates
   P.n = A.n;
@@ -233,16 +240,16 @@ void AmgHierarchy::build_level(int l, int nc) {
   P.val.assign(static_cast<std::size_t>(A.n), 1.0);
   if (opt_.smoothed) {  // P = (I - omega D^-1 A) P_tent, Vanek et al. §4
     const double omega = opt_.omega_scale / rho_[l];
-    CsrOwned S = multiply(A, P.ref(), nc);
+    CsrOwned S = csr_product(A, P.ref(), nc);
     for (int i = 0; i < A.n; ++i)
       for (int k = S.ptr[i]; k < S.ptr[i + 1]; ++k)
         S.val[k] = (S.col[k] == agg[i] ? 1.0 : 0.0) - omega * inv_diag_[l][i] * S.val[k];
     P = std::move(S);
   }
-  restrict_[l] = transpose(P.ref(), nc);
-  const CsrOwned AP = multiply(A, P.ref(), nc);
+  restrict_[l] = csr_transpose(P.ref(), nc);
+  const CsrOwned AP = csr_product(A, P.ref(), nc);
   prolong_[l] = std::move(P);
-  coarse_[l] = multiply(restrict_[l].ref(), AP.ref(), nc);
+  coarse_[l] = csr_product(restrict_[l].ref(), AP.ref(), nc);
 }
 
 void AmgHierarchy::finish() {

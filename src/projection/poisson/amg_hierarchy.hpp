@@ -75,6 +75,18 @@ CsrRef csr_view(const SparseMatrix& S);
 constexpr double kPreconditionerDropBelow = 0.05;
 constexpr double kPreconditionerKeptDiagonal = 0.5;
 void sparsify(const CsrRef& A, double fraction, CsrOwned& out);
+// The same with the scale given: off-diagonal entries below `drop` in magnitude are lumped. Row i's
+// diagonal is column i (rows may reference columns beyond A.n: a rank's halo).
+void sparsify_below(const CsrRef& A, double drop, CsrOwned& out);
+double largest_off_diagonal(const CsrRef& A);
+
+// C = A B (A: A.n rows, B: ncols columns and a row for every column of A), columns unsorted within
+// a row. Two passes (count, fill), rows in parallel, one marker array per thread.
+CsrOwned csr_product(const CsrRef& A, const CsrRef& B, int ncols);
+// A^T: ncols rows.
+CsrOwned csr_transpose(const CsrRef& A, int ncols);
+// 1 / a_ii of every row (the diagonal at column i); NumericalFailure where it is not positive.
+std::vector<double> csr_inverse_diagonal(const CsrRef& A);
 
 struct AmgOptions {
   double theta = 0.04;        // strength threshold, Vanek et al. eq. 3.2

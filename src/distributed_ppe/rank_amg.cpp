@@ -29,6 +29,8 @@ CsrOwned own_block(const CsrRef& A) {
   CsrOwned B;
   B.n = A.n;
   B.ptr.assign(static_cast<std::size_t>(A.n) + 1, 0);
+  B.col.reserve(static_cast<std::size_t>(A.ptr[A.n]));
+  B.val.reserve(B.col.capacity());
   for (int i = 0; i < A.n; ++i) {
     for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
       if (A.col[k] < A.n) {
@@ -141,35 +143,44 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
   std::vector<double> agg_of(static_cast<std::size_t>(n + h.ghosts()));
   for (int i = 0; i < n; ++i) agg_of[static_cast<std::size_t>(i)] = static_cast<double>(firstc + agg[static_cast<std::size_t>(i)]);
   h.forward(agg_of.data());
-  // Smoothed prolongator rows, global coarse columns.
+  // Smoothed prolongator rows, global coarse columns (compressed rows).
   const double omega = opt_.smoothed ? opt_.omega_scale / rho_[static_cast<std::size_t>(l)] : 0.0;
-  std::vector<std::vector<std::pair<std::int64_t, double>>> P(static_cast<std::size_t>(n));
+  std::vector<int> pptr(static_cast<std::size_t>(n) + 1, 0);
+  std::vector<std::int64_t> pcol;
+  std::vector<double> pval;
+  pcol.reserve(static_cast<std::size_t>(A.ptr[n]));
+  pval.reserve(pcol.capacity());
+  std::vector<std::pair<std::int64_t, double>> row;
   for (int i = 0; i < n; ++i) {
-    auto& row = P[static_cast<std::size_t>(i)];
+    row.clear();
     row.emplace_back(firstc + agg[static_cast<std::size_t>(i)], 1.0);
     const double w = omega * inv_diag_[static_cast<std::size_t>(l)][static_cast<std::size_t>(i)];
     if (w != 0)
       for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
         row.emplace_back(static_cast<std::int64_t>(agg_of[static_cast<std::size_t>(A.col[k])]), -w * A.val[k]);
     merge_row(row);
+    for (const auto& [c, v] : row) {
+      pcol.push_back(c);
+      pval.push_back(v);
+    }
+    pptr[static_cast<std::size_t>(i) + 1] = static_cast<int>(pcol.size());
   }
   // The rows of P at the ghosts, from their owners.
   std::vector<int> gstart;
   std::vector<double> gdata;
   h.forward_rows(
       [&](int i, std::vector<double>& out) {
-        for (const auto& [c, v] : P[static_cast<std::size_t>(i)]) {
-          out.push_back(static_cast<double>(c));
-          out.push_back(v);
+        for (int k = pptr[static_cast<std::size_t>(i)]; k < pptr[static_cast<std::size_t>(i) + 1]; ++k) {
+          out.push_back(static_cast<double>(pcol[static_cast<std::size_t>(k)]));
+          out.push_back(pval[static_cast<std::size_t>(k)]);
         }
       },
       gstart, gdata);
   // Coarse columns in a local numbering: this rank's aggregates, then the others' met (sorted).
   std::vector<std::int64_t> foreign;
   const auto is_own = [&](std::int64_t c) { return c >= firstc && c < firstc + nc; };
-  for (const auto& row : P)
-    for (const auto& e : row)
-      if (!is_own(e.first)) foreign.push_back(e.first);
+  for (std::int64_t c : pcol)
+    if (!is_own(c)) foreign.push_back(c);
   for (std::size_t k = 0; k < gdata.size(); k += 2)
     if (!is_own(static_cast<std::int64_t>(gdata[k]))) foreign.push_back(static_cast<std::int64_t>(gdata[k]));
   std::sort(foreign.begin(), foreign.end());
@@ -182,14 +193,12 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
   const auto global_c = [&](int c) { return c < nc ? firstc + c : foreign[static_cast<std::size_t>(c - nc)]; };
   CsrOwned Pall;  // rows: own, then ghosts
   Pall.n = n + h.ghosts();
-  Pall.ptr.assign(static_cast<std::size_t>(Pall.n) + 1, 0);
-  for (int i = 0; i < n; ++i) {
-    for (const auto& [c, v] : P[static_cast<std::size_t>(i)]) {
-      Pall.col.push_back(local_c(c));
-      Pall.val.push_back(v);
-    }
-    Pall.ptr[static_cast<std::size_t>(i) + 1] = static_cast<int>(Pall.col.size());
-  }
+  Pall.ptr.assign(pptr.begin(), pptr.end());
+  Pall.ptr.resize(static_cast<std::size_t>(Pall.n) + 1);
+  Pall.col.reserve(pcol.size() + gdata.size() / 2);
+  Pall.val.reserve(Pall.col.capacity());
+  for (std::int64_t c : pcol) Pall.col.push_back(local_c(c));
+  Pall.val.assign(pval.begin(), pval.end());
   for (int g = 0; g < h.ghosts(); ++g) {
     for (int k = gstart[static_cast<std::size_t>(g)]; k < gstart[static_cast<std::size_t>(g) + 1]; k += 2) {
       Pall.col.push_back(local_c(static_cast<std::int64_t>(gdata[static_cast<std::size_t>(k)])));
@@ -209,47 +218,48 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
     for (int k = Ac.ptr[static_cast<std::size_t>(c)]; k < Ac.ptr[static_cast<std::size_t>(c) + 1]; ++k)
       send[static_cast<std::size_t>(owner)].push_back({row, global_c(Ac.col[static_cast<std::size_t>(k)]), Ac.val[static_cast<std::size_t>(k)]});
   }
-  const std::vector<Entry> arrived = comm_.alltoallv(send);
-  std::vector<std::vector<std::pair<std::int64_t, double>>> rows(static_cast<std::size_t>(nc));
-  for (int c = 0; c < nc; ++c)
+  std::vector<Entry> arrived = comm_.alltoallv(send);
+  std::sort(arrived.begin(), arrived.end(), [](const Entry& a, const Entry& b) { return a.row < b.row; });
+  std::vector<int> cptr(static_cast<std::size_t>(nc) + 1, 0);
+  std::vector<std::int64_t> ccol;
+  std::vector<double> cval;
+  ccol.reserve(static_cast<std::size_t>(Ac.ptr[static_cast<std::size_t>(nc)]) + arrived.size());
+  cval.reserve(ccol.capacity());
+  std::vector<std::int64_t> ghosts;  // the coarse level's halo: the other ranks' aggregates its rows and P reference
+  std::size_t next_arrived = 0;
+  for (int c = 0; c < nc; ++c) {
+    row.clear();
     for (int k = Ac.ptr[static_cast<std::size_t>(c)]; k < Ac.ptr[static_cast<std::size_t>(c) + 1]; ++k)
-      rows[static_cast<std::size_t>(c)].emplace_back(global_c(Ac.col[static_cast<std::size_t>(k)]), Ac.val[static_cast<std::size_t>(k)]);
-  for (const Entry& e : arrived) rows[static_cast<std::size_t>(e.row - firstc)].emplace_back(e.col, e.val);
-  // The coarse level's halo: the other ranks' aggregates its rows and P's rows reference.
-  std::vector<std::int64_t> ghosts;
-  for (auto& row : rows) {
+      row.emplace_back(global_c(Ac.col[static_cast<std::size_t>(k)]), Ac.val[static_cast<std::size_t>(k)]);
+    for (; next_arrived < arrived.size() && arrived[next_arrived].row == firstc + c; ++next_arrived)
+      row.emplace_back(arrived[next_arrived].col, arrived[next_arrived].val);
     merge_row(row);
-    for (const auto& e : row)
-      if (!is_own(e.first)) ghosts.push_back(e.first);
+    for (const auto& [col, v] : row) {
+      ccol.push_back(col);
+      cval.push_back(v);
+      if (!is_own(col)) ghosts.push_back(col);
+    }
+    cptr[static_cast<std::size_t>(c) + 1] = static_cast<int>(ccol.size());
   }
-  for (int i = 0; i < n; ++i)
-    for (const auto& e : P[static_cast<std::size_t>(i)])
-      if (!is_own(e.first)) ghosts.push_back(e.first);
+  for (std::int64_t c : pcol)
+    if (!is_own(c)) ghosts.push_back(c);
   std::sort(ghosts.begin(), ghosts.end());
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
   Coarse level;
   level.offsets = offc;
   level.halo.build(comm_, offc, std::move(ghosts));
   level.A.n = nc;
-  level.A.ptr.assign(static_cast<std::size_t>(nc) + 1, 0);
-  for (int c = 0; c < nc; ++c) {
-    for (const auto& [col, v] : rows[static_cast<std::size_t>(c)]) {
-      level.A.col.push_back(level.halo.local(col));
-      level.A.val.push_back(v);
-    }
-    level.A.ptr[static_cast<std::size_t>(c) + 1] = static_cast<int>(level.A.col.size());
-  }
+  level.A.ptr = std::move(cptr);
+  level.A.col.resize(ccol.size());
+  for (std::size_t k = 0; k < ccol.size(); ++k) level.A.col[k] = level.halo.local(ccol[k]);
+  level.A.val = std::move(cval);
   // P in the coarse level's numbering, and its transpose.
   CsrOwned Pl;
   Pl.n = n;
-  Pl.ptr.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (int i = 0; i < n; ++i) {
-    for (const auto& [c, v] : P[static_cast<std::size_t>(i)]) {
-      Pl.col.push_back(level.halo.local(c));
-      Pl.val.push_back(v);
-    }
-    Pl.ptr[static_cast<std::size_t>(i) + 1] = static_cast<int>(Pl.col.size());
-  }
+  Pl.ptr = std::move(pptr);
+  Pl.col.resize(pcol.size());
+  for (std::size_t k = 0; k < pcol.size(); ++k) Pl.col[k] = level.halo.local(pcol[k]);
+  Pl.val = std::move(pval);
   restrict_.push_back(csr_transpose(Pl.ref(), nc + level.halo.ghosts()));
   prolong_.push_back(std::move(Pl));
   coarse_.push_back(std::move(level));

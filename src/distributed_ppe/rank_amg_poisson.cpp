@@ -9,6 +9,24 @@
 
 namespace arksph::distributed_ppe {
 
+CsrRef rows_in_local_columns(const parallel::Communicator& comm, const LocalRows& rows, GhostExchange& halo,
+                             std::vector<int>& local_col) {
+  const int n = static_cast<int>(rows.size());
+  const GlobalRow lo = rows.range.first, hi = lo + n;
+  std::vector<std::int64_t> ghosts;
+  for (GlobalRow c : rows.col)
+    if (c < lo || c >= hi) ghosts.push_back(c);
+  std::sort(ghosts.begin(), ghosts.end());
+  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+  const std::vector<std::int64_t> counts = comm.allgatherv(std::vector<std::int64_t>{n});
+  std::vector<std::int64_t> offsets(counts.size() + 1, 0);
+  for (std::size_t q = 0; q < counts.size(); ++q) offsets[q + 1] = offsets[q] + counts[q];
+  halo.build(comm, offsets, std::move(ghosts));
+  local_col.resize(rows.col.size());
+  for (std::size_t k = 0; k < rows.col.size(); ++k) local_col[k] = halo.local(rows.col[k]);
+  return {n, rows.start.data(), local_col.data(), rows.val.data()};
+}
+
 RankSolveReport RankAmgPoisson::solve(const LocalRows& rows, std::vector<double>& p) {
   const auto t0 = std::chrono::steady_clock::now();
   const int n = static_cast<int>(rows.size());
@@ -23,23 +41,8 @@ RankSolveReport RankAmgPoisson::solve(const LocalRows& rows, std::vector<double>
     std::fill(p.begin(), p.end(), 0.0);
     return rep;
   }
-  // The rows in local columns: this rank's rows, then the ghosts (the other ranks' rows they reference).
-  const GlobalRow lo = rows.range.first, hi = lo + n;
-  std::vector<std::int64_t> ghosts;
-  for (GlobalRow c : rows.col)
-    if (c < lo || c >= hi) ghosts.push_back(c);
-  std::sort(ghosts.begin(), ghosts.end());
-  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
-  const std::vector<std::int64_t> counts = comm_.allgatherv(std::vector<std::int64_t>{n});
-  std::vector<std::int64_t> offsets(counts.size() + 1, 0);
-  for (std::size_t q = 0; q < counts.size(); ++q) offsets[q + 1] = offsets[q] + counts[q];
-  halo_.build(comm_, offsets, std::move(ghosts));
-  A_.n = n;
-  A_.ptr.assign(rows.start.begin(), rows.start.end());
-  A_.col.resize(rows.col.size());
-  A_.val.assign(rows.val.begin(), rows.val.end());
-  for (std::size_t k = 0; k < rows.col.size(); ++k) A_.col[k] = halo_.local(rows.col[k]);
-  sparsify_below(A_.ref(), kPreconditionerDropBelow * comm_.max(largest_off_diagonal(A_.ref())), M_);
+  A_ = rows_in_local_columns(comm_, rows, halo_, local_col_);
+  sparsify_below(A_, kPreconditionerDropBelow * comm_.max(largest_off_diagonal(A_)), M_);
 
   bool setup = !amg_.ready() || must_setup_ || sums[1] > 0 || solves_since_setup_ >= kReuseMax;
   const std::size_t wide = rows.size() + static_cast<std::size_t>(halo_.ghosts());
@@ -87,7 +90,7 @@ RankSolveReport RankAmgPoisson::solve(const LocalRows& rows, std::vector<double>
 }
 
 bool RankAmgPoisson::pcg(const double* b, double nb2, int max_it, int& it, double& relative_residual, bool& broke_down) {
-  const CsrRef A = A_.ref();
+  const CsrRef A = A_;
   const int n = A.n;
   double* x = x_.data();
   double* r = r_.data();

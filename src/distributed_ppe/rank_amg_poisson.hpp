@@ -20,6 +20,12 @@
 
 namespace arksph::distributed_ppe {
 
+// Collective. The rank's rows in local columns (its own rows first, then the ghosts: the other
+// ranks' rows they reference, numbered by `halo`, which is built here): a view of rows' offsets and
+// values with the columns in `local_col`.
+CsrRef rows_in_local_columns(const parallel::Communicator& comm, const LocalRows& rows, GhostExchange& halo,
+                             std::vector<int>& local_col);
+
 class RankAmgPoisson final : public RankPoissonSolver {
  public:
   RankAmgPoisson(const parallel::Communicator& comm, double tolerance) : comm_(comm), tolerance_(tolerance), amg_(comm) {}
@@ -37,7 +43,9 @@ class RankAmgPoisson final : public RankPoissonSolver {
   double tolerance_;
   RankAmg amg_;
   GhostExchange halo_;
-  CsrOwned A_, M_;  // the rows in local columns, and the V-cycle's sparsified copy
+  std::vector<int> local_col_;  // the rows' columns in the halo's numbering
+  CsrOwned M_;                  // the V-cycle's sparsified copy of the rows
+  CsrRef A_;
   std::vector<double> x_, r_, z_, d_, q_;
   GlobalRow first_ = -1, total_ = -1;
   bool must_setup_ = true;

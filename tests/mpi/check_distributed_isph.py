@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`arksph run` with scheme isph decomposed over MPI ranks (label mpi): the projection after each
-step (Cummins & Rudman 1999) with its pressure Poisson equation solved by hypre over the ranks,
-against the one-process run, whose KLU solves each PPE exactly (to round-off):
+step (Cummins & Rudman 1999) with its pressure Poisson equation solved over the ranks (by the
+default CG with the distributed AMG V-cycle, and in one case by hypre's BoomerAMG-PCG), against the one-process run, whose KLU solves each PPE exactly (to round-off):
 
   - the spin-down (cases/spin_down/defaults.toml: walls as ghosts, particle shifting, adaptive
     steps) to t = 0.2 on 2 and 3 ranks, and with migrations every 5 steps, and the periodic
@@ -54,9 +54,9 @@ flags = sys.argv[5:]
 
 # The Poisson tolerance of these runs (method.ppe_tolerance: |b - A p| <= TOL |b| per solve).
 TOL = 1e-10
-# The bound of the comparison. Each step the ranks' pressure is hypre's, within its tolerance of
+# The bound of the comparison. Each step the ranks' pressure is the solver's, within its tolerance of
 # the exact solution KLU gives one process: measured |p - p_KLU| / |p_KLU| = 0.1-0.3 TOL
-# (arksph_mpi_tests "hypre poisson"; the worst case is cond(A) TOL). The velocity correction
+# (arksph_mpi_tests "rank poisson"; the worst case is cond(A) TOL). The velocity correction
 # dt grad P is a fraction of u, so a step adds about TOL of the largest speed, and the runs' 20-30
 # steps about 20-30 TOL (measured: 2e-11 at t = 1, 103 steps). 100 TOL leaves room for the flow's
 # amplification of these differences, which on the vortex grows fast after t = 0.05 (one process
@@ -120,15 +120,18 @@ def compare(case, args, ranks_args=(), bound=POISSON, within=True, ranks_list=(2
         check(s["steps"] == s1["steps"], "%s: %d ranks take the steps of one process (%d, %d)"
               % (case, ranks, s["steps"], s1["steps"]))
         ppe = s.get("ppe", {})
-        solver = "grid-klu" if s1["ppe"]["solver"] == "grid-klu" else "hypre-pcg-boomeramg"
+        hypre = "method.rank_ppe_solver=hypre" in " ".join(ranks_args)
+        solver = ("grid-klu" if s1["ppe"]["solver"] == "grid-klu"
+                  else "hypre-pcg-boomeramg" if hypre else "rank-pcg-amg")
         solves = s["rhs_evals"] if in_f else s1["ppe"]["solves"]
         check(ppe.get("solver") == solver and ppe.get("solves") == solves
               and ppe.get("iterations", 0) >= ppe.get("solves", 0) >= s["steps"] > 0,
               "%s: %d ranks: summary ppe %s, %s solves (%s expected), %s iterations (one process: %s solves)"
               % (case, ranks, ppe.get("solver"), ppe.get("solves"), solves, ppe.get("iterations"), s1["ppe"]["solves"]))
-        if solver == "hypre-pcg-boomeramg":
-            # Every solve meets the run's tolerance (a solve on a kept hierarchy that does not is
-            # repeated on a new one: distributed_ppe/hypre_poisson.hpp); 2 x: its retry threshold.
+        if solver != "grid-klu":
+            # Every solve meets the run's tolerance (a solve on a kept preconditioner that does not
+            # is repeated on a new one: distributed_ppe/rank_poisson_solver.hpp); 2 x: the retry
+            # threshold.
             settings = [a.split("=", 1)[1] for a in list(args) + list(ranks_args) if a.startswith("method.ppe_tolerance=")]
             tolerance = float(settings[-1]) if settings else 1e-8
             check(ppe.get("max_residual", 1.0) <= 2 * tolerance,
@@ -172,6 +175,9 @@ vortex = [os.path.join(source, "tests/scenes/taylor_green_vortex_25.toml"), "--s
           "--set", "time.end=0.05"] + tol
 compare("spin_down", spin)
 compare("spin_down_migrating", spin + ["--set", "method.reorder_every=5"])
+# The other solver over the ranks, hypre's BoomerAMG-PCG (method.rank_ppe_solver).
+compare("spin_down_hypre", spin + ["--set", "method.reorder_every=5"],
+        ranks_args=["--set", "method.rank_ppe_solver=hypre"], ranks_list=(2,))
 compare("spin_down_stages", spin + ["--set", "method.projection_points=stages"])
 compare("vortex", vortex)
 pw = ["--set", "method.density_correction=pozorski_wawrenczuk", "--set", "method.correction_threshold=1e-5"]

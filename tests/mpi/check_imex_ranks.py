@@ -15,7 +15,7 @@ stage solution is exact up to the linear solve on both sides), on one process an
 The spin-down (cases/spin_down/scene.toml: isph, here with method.projection = "constrained", the
 projection inside f_E, to t = SPIN_END, its fixed step) on 1, 2 and 3 ranks: the same step and
 implicit-evaluation counts, and the velocities at the end within AGREEMENT of one process's, the
-Poisson solve (hypre on ranks, one process's solver otherwise) at its tolerance inside each f_E.
+Poisson solve (the ranks' CG-AMG on ranks, one process's solver otherwise) at its tolerance inside each f_E.
 A Krylov solve at ARKODE's default (eps_lin 0.05) leaves 5.8e-6 between the runs (measured), so the
 check fails if the ranks' solve is loosened or wrong.
 
@@ -94,7 +94,7 @@ if all(spins.values()):
               "spin-down on %d ranks: %d steps and %d implicit evaluations, one process %d and %d"
               % (ranks, b_sum["steps"], b_sum["imex"]["implicit_rhs_evals"], a_sum["steps"],
                  a_sum["imex"]["implicit_rhs_evals"]))
-        check(b_sum["ppe"]["solver"] == "hypre-pcg-boomeramg", "spin-down on %d ranks: hypre solves the PPE" % ranks)
+        check(b_sum["ppe"]["solver"] == "rank-pcg-amg", "spin-down on %d ranks: the ranks' CG-AMG solves the PPE" % ranks)
         b = b_run.frame(len(b_run) - 1)
         check(np.array_equal(a["id"], b["id"]), "spin-down on %d ranks: one process's particle ids" % ranks)
         if np.array_equal(a["id"], b["id"]):

@@ -24,22 +24,18 @@ std::int64_t global_of(const GhostExchange& halo, std::int64_t first, int local)
   return local < halo.own() ? first + local : halo.ghost_globals()[static_cast<std::size_t>(local - halo.own())];
 }
 
-// A's rows restricted to the columns of the rank's own rows (the aggregation's graph).
-CsrOwned own_block(const CsrRef& A) {
-  CsrOwned B;
-  B.n = A.n;
-  B.ptr.assign(static_cast<std::size_t>(A.n) + 1, 0);
-  B.col.reserve(static_cast<std::size_t>(A.ptr[A.n]));
-  B.val.reserve(B.col.capacity());
-  for (int i = 0; i < A.n; ++i) {
-    for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
-      if (A.col[k] < A.n) {
-        B.col.push_back(A.col[k]);
-        B.val.push_back(A.val[k]);
-      }
-    B.ptr[static_cast<std::size_t>(i) + 1] = static_cast<int>(B.col.size());
+// Merges repeated columns of a row of few distinct columns (a prolongator row: the aggregates of a
+// row's neighbours) by a linear search, then sorts the distinct ones.
+void merge_small_row(std::vector<std::pair<std::int64_t, double>>& row) {
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < row.size(); ++k) {
+    std::size_t j = 0;
+    while (j < m && row[j].first != row[k].first) ++j;
+    if (j < m) row[j].second += row[k].second;
+    else row[m++] = row[k];
   }
-  return B;
+  row.resize(m);
+  std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 }
 
 // Sorts a row's (column, value) pairs by column and merges repeated columns.
@@ -104,14 +100,13 @@ void RankAmg::setup(const CsrRef& A, const GhostExchange& h) {
     const CsrRef Al = op(l);
     inv_diag_.push_back(csr_inverse_diagonal(Al));
     rho_.push_back(spectral_radius(l));
-    const CsrOwned owned = own_block(Al);
-    std::vector<int> agg;
+    std::vector<int> agg;  // over the rank's own rows: aggregate() leaves the halo's columns out
     double theta = opt_.theta * std::pow(opt_.theta_decay, l);
     const double n = static_cast<double>(global_size(l));
-    int nc = aggregate(owned.ref(), theta, agg);
+    int nc = aggregate(Al, theta, agg);
     double total = comm_.sum(static_cast<double>(nc));
     for (int retry = 0; retry < 4 && total > 0.5 * n; ++retry) {  // as one process: halve theta while coarsening stalls
-      nc = aggregate(owned.ref(), theta *= 0.5, agg);
+      nc = aggregate(Al, theta *= 0.5, agg);
       total = comm_.sum(static_cast<double>(nc));
     }
     if (total > 0.9 * n) {  // coarsening stalled: solve this level directly
@@ -158,7 +153,7 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
     if (w != 0)
       for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k)
         row.emplace_back(static_cast<std::int64_t>(agg_of[static_cast<std::size_t>(A.col[k])]), -w * A.val[k]);
-    merge_row(row);
+    merge_small_row(row);
     for (const auto& [c, v] : row) {
       pcol.push_back(c);
       pval.push_back(v);

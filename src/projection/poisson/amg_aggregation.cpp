@@ -6,6 +6,7 @@
 //   phase 3: nodes still left (no strong link to any phase-1 aggregate) form aggregates with their
 //            unaggregated strong neighbours.
 // Nodes without strong off-diagonal links (the pinned unknown, isolated particles) are singletons.
+// Columns at or beyond A.n (a rank's halo) are not nodes of the graph and are left out.
 #include <cmath>
 
 #include "projection/poisson/amg_hierarchy.hpp"
@@ -25,7 +26,7 @@ int aggregate(const CsrRef& A, double theta, std::vector<int>& agg) {
   for (int i = 0; i < n; ++i) {
     for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k) {
       const int j = A.col[k];
-      if (j != i && A.val[k] * A.val[k] >= t2 * diag[i] * diag[j]) scol.push_back(j);
+      if (j != i && j < n && A.val[k] * A.val[k] >= t2 * diag[i] * diag[j]) scol.push_back(j);
     }
     sptr[i + 1] = static_cast<int>(scol.size());
   }
@@ -48,7 +49,7 @@ int aggregate(const CsrRef& A, double theta, std::vector<int>& agg) {
     double best = -1;
     for (int k = A.ptr[i]; k < A.ptr[i + 1]; ++k) {
       const int j = A.col[k];
-      if (j == i || phase1[j] < 0) continue;
+      if (j == i || j >= n || phase1[j] < 0) continue;
       const double s = A.val[k] * A.val[k];
       if (s >= t2 * diag[i] * diag[j] && s > best) {
         best = s;

@@ -139,6 +139,7 @@ class AmgHierarchy {
 
 // Aggregates of the strong-connection graph (Vanek et al. 1996 §3, phases 1-3): agg[i] in
 // [0, count). Rows with no off-diagonal strong connection (e.g. the pinned unknown) form singletons.
+// Columns at or beyond A.n (the halo of a rank's rows) are left out of the graph.
 int aggregate(const CsrRef& A, double theta, std::vector<int>& agg);
 
 }  // namespace arksph

@@ -227,7 +227,7 @@ class RankProcess final : public RunProcess {
   const bool write_frames_;
   const bool pieces_;
   // The solver of the projection's Poisson equation over the ranks (method.rank_ppe_solver).
-  const std::string rank_solver_ = scene_.rank_ppe_solver == "auto" ? "amg" : scene_.rank_ppe_solver;
+  const std::string rank_solver_ = distributed_ppe::resolved_rank_poisson_solver(scene_.rank_ppe_solver);
   Model* model_ = nullptr;
   std::optional<parallel::CellGrid> grid_;
   std::optional<parallel::Decomposition> decomposition_;

@@ -27,14 +27,14 @@
 // (hypre_BoomerAMGSolve takes its finest level from the matrix it is given); the coarse levels,
 // interpolation and the Chebyshev smoother's diagonal scaling and eigenvalue bound stay those of
 // the set-up matrix: a fixed symmetric preconditioner, so PCG stays valid. The hierarchy is set up anew when a solve needs more
-// than kGrowth times the iterations of the first solve after the last set-up (and 2 more), after
-// kMaxReuse solves, after invalidate() (the rows were numbered anew: migration, a new deal), or
+// than kReuseGrowth times the iterations of the first solve after the last set-up (and 2 more), after
+// kReuseMax solves, after invalidate() (the rows were numbered anew: migration, a new deal), or
 // when any rank's row range changed. Iterations are global, so every rank takes the same decision.
 // A kept hierarchy can stop preconditioning: as the particles move, its smoother's eigenvalue bound
 // and coarse levels drift from the new matrix, and PCG may break down after an iteration or two,
 // far from the tolerance (seen on the N = 57,600 cavity on 2 ranks after 8 reuses, iterations
 // falling while the residual grew to 1.9 |b|, which the growth rule cannot see). A solve on a kept
-// hierarchy whose true residual ends above kRetryAbove times the tolerance is therefore solved
+// hierarchy whose true residual ends above kReuseRetryAbove times the tolerance is therefore solved
 // again, from the same start, on a hierarchy set up on its own matrix; its iterations and times
 // add to the report.
 #pragma once

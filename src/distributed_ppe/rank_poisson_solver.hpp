@@ -46,6 +46,8 @@ class RankPoissonSolver {
 
 // The names method.rank_ppe_solver takes in this build ("auto" first), and the solver of one.
 std::vector<std::string> rank_poisson_solver_names();
+// The solver a name stands for: "auto" is "amg".
+std::string resolved_rank_poisson_solver(const std::string& name);
 std::unique_ptr<RankPoissonSolver> make_rank_poisson_solver(const std::string& name, const parallel::Communicator& comm,
                                                             double tolerance);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -17,6 +18,21 @@ std::vector<std::int64_t> block_offsets(const parallel::Communicator& comm, int 
   std::vector<std::int64_t> offsets(counts.size() + 1, 0);
   for (std::size_t q = 0; q < counts.size(); ++q) offsets[q + 1] = offsets[q] + counts[q];
   return offsets;
+}
+
+// 1 / a_ii of the rank's rows, or NumericalFailure on every rank when any rank has a diagonal that
+// is not positive (thrown together, so that no rank is left waiting in the next collective).
+std::vector<double> inverse_diagonal_everywhere(const parallel::Communicator& comm, const CsrRef& A) {
+  std::vector<double> d;
+  std::string failure;
+  try {
+    d = csr_inverse_diagonal(A);
+  } catch (const NumericalFailure& e) {
+    failure = e.what();
+  }
+  if (comm.max(static_cast<std::int64_t>(failure.empty() ? 0 : 1)) > 0)
+    throw NumericalFailure(failure.empty() ? "cg_amg over ranks: matrix diagonal not positive on another rank" : failure);
+  return d;
 }
 
 // The global index of a level's local column.
@@ -98,7 +114,7 @@ void RankAmg::setup(const CsrRef& A, const GhostExchange& h) {
   while (levels() < opt_.max_levels && global_size(levels() - 1) > opt_.max_coarse) {
     const int l = levels() - 1;
     const CsrRef Al = op(l);
-    inv_diag_.push_back(csr_inverse_diagonal(Al));
+    inv_diag_.push_back(inverse_diagonal_everywhere(comm_, Al));
     rho_.push_back(spectral_radius(l));
     std::vector<int> agg;  // over the rank's own rows: aggregate() leaves the halo's columns out
     double theta = opt_.theta * std::pow(opt_.theta_decay, l);
@@ -123,7 +139,7 @@ void RankAmg::rebind_finest(const CsrRef& A, const GhostExchange& h) {
   if (A.n != A0_.n) throw std::logic_error("RankAmg::rebind_finest: the rank's rows changed");
   A0_ = A;
   halo0_ = &h;
-  if (levels() > 1) inv_diag_[0] = csr_inverse_diagonal(A);
+  if (levels() > 1) inv_diag_[0] = inverse_diagonal_everywhere(comm_, A);
   size_work(0);
   if (levels() == 1) finish();  // the finest level is the coarsest: factorise the new matrix
 }

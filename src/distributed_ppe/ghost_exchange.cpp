@@ -41,8 +41,10 @@ void GhostExchange::build(const parallel::Communicator& comm, const std::vector<
   for (int q = 0; q < ranks; ++q) {
     const std::size_t sends = asked_by[static_cast<std::size_t>(q)];
     const int recvs = from[static_cast<std::size_t>(q)];
-    for (std::size_t k = 0; k < sends; ++k) send_index_.push_back(static_cast<int>(asked[at++] - first_));
-    if (sends == 0 && recvs == 0) continue;
+    for (std::size_t k = 0; k < sends; ++k)
+      send_index_.push_back(static_cast<int>(asked[at++] - first_));
+    if (sends == 0 && recvs == 0)
+      continue;
     peers_.push_back(q);
     recv_start_.push_back(recv_start_.back() + recvs);
     send_start_.push_back(static_cast<int>(send_index_.size()));
@@ -52,9 +54,11 @@ void GhostExchange::build(const parallel::Communicator& comm, const std::vector<
 }
 
 int GhostExchange::local(std::int64_t global) const {
-  if (global >= first_ && global < first_ + own_) return static_cast<int>(global - first_);
+  if (global >= first_ && global < first_ + own_)
+    return static_cast<int>(global - first_);
   const auto it = std::lower_bound(ghost_.begin(), ghost_.end(), global);
-  if (it == ghost_.end() || *it != global) return -1;
+  if (it == ghost_.end() || *it != global)
+    return -1;
   return own_ + static_cast<int>(it - ghost_.begin());
 }
 
@@ -67,9 +71,11 @@ void GhostExchange::forward(double* x) const {
   }
   for (std::size_t q = 0; q < peers_.size(); ++q) {
     const int count = send_start_[q + 1] - send_start_[q];
-    if (count == 0) continue;
+    if (count == 0)
+      continue;
     double* out = buffer_.data() + send_start_[q];
-    for (int k = 0; k < count; ++k) out[k] = x[send_index_[static_cast<std::size_t>(send_start_[q] + k)]];
+    for (int k = 0; k < count; ++k)
+      out[k] = x[send_index_[static_cast<std::size_t>(send_start_[q] + k)]];
     MPI_Isend(out, count, MPI_DOUBLE, peers_[q], kTagValues, comm_, &requests_[nreq++]);
   }
   MPI_Waitall(nreq, requests_.data(), MPI_STATUSES_IGNORE);
@@ -88,7 +94,8 @@ void GhostExchange::reverse_add(double* x) const {
       MPI_Isend(x + own_ + recv_start_[q], count, MPI_DOUBLE, peers_[q], kTagValues, comm_, &requests_[nreq++]);
   }
   MPI_Waitall(nreq, requests_.data(), MPI_STATUSES_IGNORE);
-  for (std::size_t k = 0; k < send_index_.size(); ++k) x[send_index_[k]] += buffer_[k];
+  for (std::size_t k = 0; k < send_index_.size(); ++k)
+    x[send_index_[k]] += buffer_[k];
 }
 
 void GhostExchange::exchange_records(const std::vector<double>& send, const std::vector<int>& send_len,
@@ -104,12 +111,14 @@ void GhostExchange::exchange_records(const std::vector<double>& send, const std:
       MPI_Isend(&send_len[q], 1, MPI_INT, peers_[q], kTagLengths, comm_, &requests_[nreq++]);
   MPI_Waitall(nreq, requests_.data(), MPI_STATUSES_IGNORE);
   std::vector<int> recv_at(peers + 1, 0);
-  for (std::size_t q = 0; q < peers; ++q) recv_at[q + 1] = recv_at[q] + recv_len[q];
+  for (std::size_t q = 0; q < peers; ++q)
+    recv_at[q + 1] = recv_at[q] + recv_len[q];
   std::vector<double> received(static_cast<std::size_t>(recv_at[peers]));
   nreq = 0;
   for (std::size_t q = 0; q < peers; ++q)
     if (recv_len[q] > 0)
-      MPI_Irecv(received.data() + recv_at[q], recv_len[q], MPI_DOUBLE, peers_[q], kTagRecords, comm_, &requests_[nreq++]);
+      MPI_Irecv(received.data() + recv_at[q], recv_len[q], MPI_DOUBLE, peers_[q], kTagRecords, comm_,
+                &requests_[nreq++]);
   std::size_t sent = 0;
   for (std::size_t q = 0; q < peers; ++q) {
     if (send_len[q] > 0)

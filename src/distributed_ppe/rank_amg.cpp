@@ -16,7 +16,8 @@ namespace {
 std::vector<std::int64_t> block_offsets(const parallel::Communicator& comm, int n) {
   const std::vector<std::int64_t> counts = comm.allgatherv(std::vector<std::int64_t>{n});
   std::vector<std::int64_t> offsets(counts.size() + 1, 0);
-  for (std::size_t q = 0; q < counts.size(); ++q) offsets[q + 1] = offsets[q] + counts[q];
+  for (std::size_t q = 0; q < counts.size(); ++q)
+    offsets[q + 1] = offsets[q] + counts[q];
   return offsets;
 }
 
@@ -31,7 +32,8 @@ std::vector<double> inverse_diagonal_everywhere(const parallel::Communicator& co
     failure = e.what();
   }
   if (comm.max(static_cast<std::int64_t>(failure.empty() ? 0 : 1)) > 0)
-    throw NumericalFailure(failure.empty() ? "cg_amg over ranks: matrix diagonal not positive on another rank" : failure);
+    throw NumericalFailure(failure.empty() ? "cg_amg over ranks: matrix diagonal not positive on another rank"
+                                           : failure);
   return d;
 }
 
@@ -46,9 +48,12 @@ void merge_small_row(std::vector<std::pair<std::int64_t, double>>& row) {
   std::size_t m = 0;
   for (std::size_t k = 0; k < row.size(); ++k) {
     std::size_t j = 0;
-    while (j < m && row[j].first != row[k].first) ++j;
-    if (j < m) row[j].second += row[k].second;
-    else row[m++] = row[k];
+    while (j < m && row[j].first != row[k].first)
+      ++j;
+    if (j < m)
+      row[j].second += row[k].second;
+    else
+      row[m++] = row[k];
   }
   row.resize(m);
   std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -60,8 +65,10 @@ void merge_row(std::vector<std::pair<Col, double>>& row) {
   std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::size_t m = 0;
   for (std::size_t k = 0; k < row.size(); ++k) {
-    if (m > 0 && row[m - 1].first == row[k].first) row[m - 1].second += row[k].second;
-    else row[m++] = row[k];
+    if (m > 0 && row[m - 1].first == row[k].first)
+      row[m - 1].second += row[k].second;
+    else
+      row[m++] = row[k];
   }
   row.resize(m);
 }
@@ -94,10 +101,12 @@ double RankAmg::spectral_radius(int l) const {
       norms[1] += x[static_cast<std::size_t>(i)] * x[static_cast<std::size_t>(i)];
     }
     comm_.sum_in_place(norms);
-    if (!(norms[0] > 0)) return est;
+    if (!(norms[0] > 0))
+      return est;
     est = std::sqrt(norms[0] / norms[1]);
     const double s = 1.0 / std::sqrt(norms[0]);
-    for (int i = 0; i < A.n; ++i) x[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] * s;
+    for (int i = 0; i < A.n; ++i)
+      x[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] * s;
   }
   return est;
 }
@@ -136,12 +145,15 @@ void RankAmg::setup(const CsrRef& A, const GhostExchange& h) {
 }
 
 void RankAmg::rebind_finest(const CsrRef& A, const GhostExchange& h) {
-  if (A.n != A0_.n) throw std::logic_error("RankAmg::rebind_finest: the rank's rows changed");
+  if (A.n != A0_.n)
+    throw std::logic_error("RankAmg::rebind_finest: the rank's rows changed");
   A0_ = A;
   halo0_ = &h;
-  if (levels() > 1) inv_diag_[0] = inverse_diagonal_everywhere(comm_, A);
+  if (levels() > 1)
+    inv_diag_[0] = inverse_diagonal_everywhere(comm_, A);
   size_work(0);
-  if (levels() == 1) finish();  // the finest level is the coarsest: factorise the new matrix
+  if (levels() == 1)
+    finish();  // the finest level is the coarsest: factorise the new matrix
 }
 
 void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
@@ -152,7 +164,8 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
   const std::int64_t firstc = offc[static_cast<std::size_t>(me)];
   // The aggregates of the level's ghosts, by their owners.
   std::vector<double> agg_of(static_cast<std::size_t>(n + h.ghosts()));
-  for (int i = 0; i < n; ++i) agg_of[static_cast<std::size_t>(i)] = static_cast<double>(firstc + agg[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < n; ++i)
+    agg_of[static_cast<std::size_t>(i)] = static_cast<double>(firstc + agg[static_cast<std::size_t>(i)]);
   h.forward(agg_of.data());
   // Smoothed prolongator rows, global coarse columns (compressed rows).
   const double omega = opt_.smoothed ? opt_.omega_scale / rho_[static_cast<std::size_t>(l)] : 0.0;
@@ -191,9 +204,11 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
   std::vector<std::int64_t> foreign;
   const auto is_own = [&](std::int64_t c) { return c >= firstc && c < firstc + nc; };
   for (std::int64_t c : pcol)
-    if (!is_own(c)) foreign.push_back(c);
+    if (!is_own(c))
+      foreign.push_back(c);
   for (std::size_t k = 0; k < gdata.size(); k += 2)
-    if (!is_own(static_cast<std::int64_t>(gdata[k]))) foreign.push_back(static_cast<std::int64_t>(gdata[k]));
+    if (!is_own(static_cast<std::int64_t>(gdata[k])))
+      foreign.push_back(static_cast<std::int64_t>(gdata[k]));
   std::sort(foreign.begin(), foreign.end());
   foreign.erase(std::unique(foreign.begin(), foreign.end()), foreign.end());
   const int next = nc + static_cast<int>(foreign.size());
@@ -208,7 +223,8 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
   Pall.ptr.resize(static_cast<std::size_t>(Pall.n) + 1);
   Pall.col.reserve(pcol.size() + gdata.size() / 2);
   Pall.val.reserve(Pall.col.capacity());
-  for (std::int64_t c : pcol) Pall.col.push_back(local_c(c));
+  for (std::int64_t c : pcol)
+    Pall.col.push_back(local_c(c));
   Pall.val.assign(pval.begin(), pval.end());
   for (int g = 0; g < h.ghosts(); ++g) {
     for (int k = gstart[static_cast<std::size_t>(g)]; k < gstart[static_cast<std::size_t>(g) + 1]; k += 2) {
@@ -227,7 +243,8 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
     const std::int64_t row = global_c(c);
     const int owner = static_cast<int>(std::upper_bound(offc.begin(), offc.end(), row) - offc.begin()) - 1;
     for (int k = Ac.ptr[static_cast<std::size_t>(c)]; k < Ac.ptr[static_cast<std::size_t>(c) + 1]; ++k)
-      send[static_cast<std::size_t>(owner)].push_back({row, global_c(Ac.col[static_cast<std::size_t>(k)]), Ac.val[static_cast<std::size_t>(k)]});
+      send[static_cast<std::size_t>(owner)].push_back(
+          {row, global_c(Ac.col[static_cast<std::size_t>(k)]), Ac.val[static_cast<std::size_t>(k)]});
   }
   std::vector<Entry> arrived = comm_.alltoallv(send);
   std::sort(arrived.begin(), arrived.end(), [](const Entry& a, const Entry& b) { return a.row < b.row; });
@@ -248,12 +265,14 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
     for (const auto& [col, v] : row) {
       ccol.push_back(col);
       cval.push_back(v);
-      if (!is_own(col)) ghosts.push_back(col);
+      if (!is_own(col))
+        ghosts.push_back(col);
     }
     cptr[static_cast<std::size_t>(c) + 1] = static_cast<int>(ccol.size());
   }
   for (std::int64_t c : pcol)
-    if (!is_own(c)) ghosts.push_back(c);
+    if (!is_own(c))
+      ghosts.push_back(c);
   std::sort(ghosts.begin(), ghosts.end());
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
   Coarse level;
@@ -262,14 +281,16 @@ void RankAmg::build_level(int l, const std::vector<int>& agg, int nc) {
   level.A.n = nc;
   level.A.ptr = std::move(cptr);
   level.A.col.resize(ccol.size());
-  for (std::size_t k = 0; k < ccol.size(); ++k) level.A.col[k] = level.halo.local(ccol[k]);
+  for (std::size_t k = 0; k < ccol.size(); ++k)
+    level.A.col[k] = level.halo.local(ccol[k]);
   level.A.val = std::move(cval);
   // P in the coarse level's numbering, and its transpose.
   CsrOwned Pl;
   Pl.n = n;
   Pl.ptr = std::move(pptr);
   Pl.col.resize(pcol.size());
-  for (std::size_t k = 0; k < pcol.size(); ++k) Pl.col[k] = level.halo.local(pcol[k]);
+  for (std::size_t k = 0; k < pcol.size(); ++k)
+    Pl.col[k] = level.halo.local(pcol[k]);
   Pl.val = std::move(pval);
   restrict_.push_back(csr_transpose(Pl.ref(), nc + level.halo.ghosts()));
   prolong_.push_back(std::move(Pl));
@@ -283,19 +304,23 @@ void RankAmg::finish() {
   const std::int64_t first = offsets(L - 1)[static_cast<std::size_t>(comm_.rank())];
   std::vector<Entry> mine;
   for (int i = 0; i < C.n; ++i)
-    for (int k = C.ptr[i]; k < C.ptr[i + 1]; ++k) mine.push_back({first + i, global_of(h, first, C.col[k]), C.val[k]});
+    for (int k = C.ptr[i]; k < C.ptr[i + 1]; ++k)
+      mine.push_back({first + i, global_of(h, first, C.col[k]), C.val[k]});
   const std::vector<Entry> all = comm_.allgatherv(mine);
   const auto N = static_cast<Eigen::Index>(global_size(L - 1));
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(N, N);
-  for (const Entry& e : all) dense(e.row, e.col) += e.val;
+  for (const Entry& e : all)
+    dense(e.row, e.col) += e.val;
   coarsest_.compute(dense);
-  if (coarsest_.info() != Eigen::Success) throw NumericalFailure("rank AMG: coarsest matrix not positive definite");
+  if (coarsest_.info() != Eigen::Success)
+    throw NumericalFailure("rank AMG: coarsest matrix not positive definite");
   r_.resize(static_cast<std::size_t>(L));
   b_.resize(r_.size());
   x_.resize(r_.size());
   d_.resize(r_.size());
   t_.resize(r_.size());
-  for (int l = 0; l < L; ++l) size_work(l);
+  for (int l = 0; l < L; ++l)
+    size_work(l);
 }
 
 void RankAmg::size_work(int l) {
@@ -353,9 +378,11 @@ void RankAmg::cycle(int l, const double* b, double* x) const {
   const int n = A.n;
   if (l == L - 1) {  // every rank solves the gathered coarsest system and keeps its rows
     const std::vector<double> all = comm_.allgatherv(std::vector<double>(b, b + n));
-    const Eigen::VectorXd z = coarsest_.solve(Eigen::Map<const Eigen::VectorXd>(all.data(), static_cast<Eigen::Index>(all.size())));
+    const Eigen::VectorXd z =
+        coarsest_.solve(Eigen::Map<const Eigen::VectorXd>(all.data(), static_cast<Eigen::Index>(all.size())));
     const std::int64_t first = offsets(l)[static_cast<std::size_t>(comm_.rank())];
-    for (int i = 0; i < n; ++i) x[i] = z(static_cast<Eigen::Index>(first + i));
+    for (int i = 0; i < n; ++i)
+      x[i] = z(static_cast<Eigen::Index>(first + i));
     return;
   }
   const std::size_t s = static_cast<std::size_t>(l);
@@ -372,12 +399,15 @@ void RankAmg::cycle(int l, const double* b, double* x) const {
   const CsrRef P = prolong_[s].ref();
   for (int i = 0; i < n; ++i) {
     double sum = 0;
-    for (int k = P.ptr[i]; k < P.ptr[i + 1]; ++k) sum += P.val[k] * xc[P.col[k]];
+    for (int k = P.ptr[i]; k < P.ptr[i + 1]; ++k)
+      sum += P.val[k] * xc[P.col[k]];
     x[i] += sum;
   }
   smooth(l, b, x, false);
 }
 
-void RankAmg::vcycle(const double* r, double* z) const { cycle(0, r, z); }
+void RankAmg::vcycle(const double* r, double* z) const {
+  cycle(0, r, z);
+}
 
 }  // namespace arksph::distributed_ppe

@@ -15,25 +15,30 @@ CsrRef rows_in_local_columns(const parallel::Communicator& comm, const LocalRows
   const GlobalRow lo = rows.range.first, hi = lo + n;
   std::vector<std::int64_t> ghosts;
   for (GlobalRow c : rows.col)
-    if (c < lo || c >= hi) ghosts.push_back(c);
+    if (c < lo || c >= hi)
+      ghosts.push_back(c);
   std::sort(ghosts.begin(), ghosts.end());
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
   const std::vector<std::int64_t> counts = comm.allgatherv(std::vector<std::int64_t>{n});
   std::vector<std::int64_t> offsets(counts.size() + 1, 0);
-  for (std::size_t q = 0; q < counts.size(); ++q) offsets[q + 1] = offsets[q] + counts[q];
+  for (std::size_t q = 0; q < counts.size(); ++q)
+    offsets[q + 1] = offsets[q] + counts[q];
   halo.build(comm, offsets, std::move(ghosts));
   local_col.resize(rows.col.size());
-  for (std::size_t k = 0; k < rows.col.size(); ++k) local_col[k] = halo.local(rows.col[k]);
+  for (std::size_t k = 0; k < rows.col.size(); ++k)
+    local_col[k] = halo.local(rows.col[k]);
   return {n, rows.start.data(), local_col.data(), rows.val.data()};
 }
 
 RankSolveReport RankAmgPoisson::solve(const LocalRows& rows, std::vector<double>& p) {
   const auto t0 = std::chrono::steady_clock::now();
   const int n = static_cast<int>(rows.size());
-  if (p.size() != rows.size()) p.assign(rows.size(), 0.0);
+  if (p.size() != rows.size())
+    p.assign(rows.size(), 0.0);
   RankSolveReport rep;
   std::vector<double> sums{0.0, 0.0};
-  for (double v : rows.b) sums[0] += v * v;
+  for (double v : rows.b)
+    sums[0] += v * v;
   sums[1] = rows.range.first != first_ || rows.range.total != total_ ? 1.0 : 0.0;
   comm_.sum_in_place(sums);
   const double nb2 = sums[0];
@@ -71,17 +76,21 @@ RankSolveReport RankAmgPoisson::solve(const LocalRows& rows, std::vector<double>
     const auto t1 = std::chrono::steady_clock::now();
     int it = 0;
     bool broke_down = false;
-    pcg(rows.b.data(), nb2, static_cast<int>(std::min<GlobalRow>(max_it, 1 << 30)), it, rep.relative_residual, broke_down);
+    pcg(rows.b.data(), nb2, static_cast<int>(std::min<GlobalRow>(max_it, 1 << 30)), it, rep.relative_residual,
+        broke_down);
     rep.solve_seconds += seconds_since(t1);
     rep.iterations += it;
     if (!setup && attempt == 0 && (broke_down || rep.relative_residual > kReuseRetryAbove * tolerance_)) {
       setup = true;  // global decision: the residual and the breakdown are global
       continue;
     }
-    if (broke_down) throw NumericalFailure("rank AMG: preconditioner not positive definite");
+    if (broke_down)
+      throw NumericalFailure("rank AMG: preconditioner not positive definite");
     ++solves_since_setup_;
-    if (baseline_ < 0) baseline_ = it;
-    else if (it > std::max(kReuseGrowth * baseline_, baseline_ + 2.0)) must_setup_ = true;  // +2: not on noise of small counts
+    if (baseline_ < 0)
+      baseline_ = it;
+    else if (it > std::max(kReuseGrowth * baseline_, baseline_ + 2.0))
+      must_setup_ = true;  // +2: not on noise of small counts
     break;
   }
   std::copy(x_.begin(), x_.begin() + n, p.begin());
@@ -89,7 +98,8 @@ RankSolveReport RankAmgPoisson::solve(const LocalRows& rows, std::vector<double>
   return rep;
 }
 
-bool RankAmgPoisson::pcg(const double* b, double nb2, int max_it, int& it, double& relative_residual, bool& broke_down) {
+bool RankAmgPoisson::pcg(const double* b, double nb2, int max_it, int& it, double& relative_residual,
+                         bool& broke_down) {
   const CsrRef A = A_;
   const int n = A.n;
   double* x = x_.data();
@@ -99,7 +109,8 @@ bool RankAmgPoisson::pcg(const double* b, double nb2, int max_it, int& it, doubl
   double* q = q_.data();
   const auto dot = [&](const double* u, const double* v) {
     double s = 0;
-    for (int i = 0; i < n; ++i) s += u[i] * v[i];
+    for (int i = 0; i < n; ++i)
+      s += u[i] * v[i];
     return comm_.sum(s);
   };
   halo_.forward(x);
@@ -117,7 +128,8 @@ bool RankAmgPoisson::pcg(const double* b, double nb2, int max_it, int& it, doubl
     }
     const double beta = it == 0 ? 0.0 : rz_new / rz;
     rz = rz_new;
-    for (int i = 0; i < n; ++i) d[i] = z[i] + beta * d[i];
+    for (int i = 0; i < n; ++i)
+      d[i] = z[i] + beta * d[i];
     halo_.forward(d);
     csr_multiply(A, d, q);
     const double dq = dot(d, q);

@@ -28,7 +28,8 @@ CsrRef rows_in_local_columns(const parallel::Communicator& comm, const LocalRows
 
 class RankAmgPoisson final : public RankPoissonSolver {
  public:
-  RankAmgPoisson(const parallel::Communicator& comm, double tolerance) : comm_(comm), tolerance_(tolerance), amg_(comm) {}
+  RankAmgPoisson(const parallel::Communicator& comm, double tolerance)
+      : comm_(comm), tolerance_(tolerance), amg_(comm) {}
   std::string name() const override { return "amg"; }
   RankSolveReport solve(const LocalRows& rows, std::vector<double>& p) override;
   void invalidate() override { must_setup_ = true; }

@@ -18,19 +18,23 @@ using namespace arksph::parallel;
 using namespace arksph::parallel::testing;
 
 namespace {
-double value_of(std::int64_t g) { return 1000.0 + 0.25 * static_cast<double>(g); }
+double value_of(std::int64_t g) {
+  return 1000.0 + 0.25 * static_cast<double>(g);
+}
 }  // namespace
 
 TEST_CASE("ghost exchange: forward, reverse_add and forward_rows carry the owners' entries") {
   const Communicator comm;
   const int ranks = comm.size(), me = comm.rank();
   std::vector<std::int64_t> offsets(static_cast<std::size_t>(ranks) + 1, 0);
-  for (int q = 0; q < ranks; ++q) offsets[static_cast<std::size_t>(q) + 1] = offsets[static_cast<std::size_t>(q)] + 5 + 2 * q;
+  for (int q = 0; q < ranks; ++q)
+    offsets[static_cast<std::size_t>(q) + 1] = offsets[static_cast<std::size_t>(q)] + 5 + 2 * q;
   const std::int64_t first = offsets[static_cast<std::size_t>(me)], end = offsets[static_cast<std::size_t>(me) + 1];
   // Ghosts: every other rank's index divisible by 3 (none on one rank).
   std::vector<std::int64_t> ghosts;
   for (std::int64_t g = 0; g < offsets.back(); ++g)
-    if ((g < first || g >= end) && g % 3 == 0) ghosts.push_back(g);
+    if ((g < first || g >= end) && g % 3 == 0)
+      ghosts.push_back(g);
   distributed_ppe::GhostExchange halo;
   halo.build(comm, offsets, ghosts);
   const int n = static_cast<int>(end - first);
@@ -38,16 +42,20 @@ TEST_CASE("ghost exchange: forward, reverse_add and forward_rows carry the owner
   REQUIRE(halo.ghosts() == static_cast<int>(ghosts.size()));
 
   std::vector<double> x(static_cast<std::size_t>(n + halo.ghosts()), -1.0);
-  for (int i = 0; i < n; ++i) x[static_cast<std::size_t>(i)] = value_of(first + i);
+  for (int i = 0; i < n; ++i)
+    x[static_cast<std::size_t>(i)] = value_of(first + i);
   halo.forward(x.data());
-  for (int k = 0; k < halo.ghosts(); ++k) CHECK(x[static_cast<std::size_t>(n + k)] == value_of(ghosts[static_cast<std::size_t>(k)]));
-  for (std::int64_t g : ghosts) CHECK(halo.local(g) == n + (std::lower_bound(ghosts.begin(), ghosts.end(), g) - ghosts.begin()));
+  for (int k = 0; k < halo.ghosts(); ++k)
+    CHECK(x[static_cast<std::size_t>(n + k)] == value_of(ghosts[static_cast<std::size_t>(k)]));
+  for (std::int64_t g : ghosts)
+    CHECK(halo.local(g) == n + (std::lower_bound(ghosts.begin(), ghosts.end(), g) - ghosts.begin()));
 
   // reverse_add: each ghost slot holds 1, so an entry gains the number of other ranks reading it.
   std::fill(x.begin(), x.begin() + n, 0.0);
   std::fill(x.begin() + n, x.end(), 1.0);
   halo.reverse_add(x.data());
-  for (int i = 0; i < n; ++i) CHECK(x[static_cast<std::size_t>(i)] == ((first + i) % 3 == 0 ? ranks - 1 : 0));
+  for (int i = 0; i < n; ++i)
+    CHECK(x[static_cast<std::size_t>(i)] == ((first + i) % 3 == 0 ? ranks - 1 : 0));
 
   // Records of varying length: entry g sends g % 3 + 1 values g, g + 1, ...
   std::vector<int> start;
@@ -55,13 +63,15 @@ TEST_CASE("ghost exchange: forward, reverse_add and forward_rows carry the owner
   halo.forward_rows(
       [&](int i, std::vector<double>& out) {
         const std::int64_t g = first + i;
-        for (std::int64_t k = 0; k <= g % 3; ++k) out.push_back(static_cast<double>(g + k));
+        for (std::int64_t k = 0; k <= g % 3; ++k)
+          out.push_back(static_cast<double>(g + k));
       },
       start, data);
   REQUIRE(start.size() == ghosts.size() + 1);
   for (std::size_t k = 0; k < ghosts.size(); ++k) {
     REQUIRE(start[k + 1] - start[k] == ghosts[k] % 3 + 1);
-    for (int j = start[k]; j < start[k + 1]; ++j) CHECK(data[static_cast<std::size_t>(j)] == static_cast<double>(ghosts[k] + (j - start[k])));
+    for (int j = start[k]; j < start[k + 1]; ++j)
+      CHECK(data[static_cast<std::size_t>(j)] == static_cast<double>(ghosts[k] + (j - start[k])));
   }
 }
 
@@ -105,8 +115,8 @@ TEST_CASE("rank AMG: the V-cycle is symmetric and positive definite over the ran
     pos = comm.sum(pos);
     norm = comm.sum(norm);
     if (comm.rank() == 0)
-      MESSAGE(std::string(periodic ? "periodic" : "walls"), ", ", comm.size(), " ranks, ", amg.levels(), " levels: r2.Mr1 = ", a,
-              ", r1.Mr2 = ", b, ", r1.Mr1 = ", pos);
+      MESSAGE(std::string(periodic ? "periodic" : "walls"), ", ", comm.size(), " ranks, ", amg.levels(),
+              " levels: r2.Mr1 = ", a, ", r1.Mr2 = ", b, ", r1.Mr1 = ", pos);
     CHECK(std::abs(a - b) <= 1e-12 * std::abs(pos));
     CHECK(pos > 0);
     CHECK(norm > 0);
@@ -128,8 +138,8 @@ TEST_CASE("rank AMG: CG's iterations over the ranks stay within 1.5 x one proces
     std::vector<double> q(one.particles.n, 0.0);
     const SolveReport serial = make_poisson_solver("cg_amg", kTolerance)->solve(one.sys.A, one.sys.b, q);
     if (comm.rank() == 0)
-      MESSAGE(std::string(periodic ? "periodic" : "walls"), ", ", comm.size(), " ranks: ", rep.iterations, " iterations; cg_amg ",
-              serial.iterations);
+      MESSAGE(std::string(periodic ? "periodic" : "walls"), ", ", comm.size(), " ranks: ", rep.iterations,
+              " iterations; cg_amg ", serial.iterations);
     CHECK(rep.relative_residual <= kTolerance);
     CHECK(rep.iterations <= 1.5 * serial.iterations);
     // The solutions agree within cond(A) tol (the bound of test_rank_poisson.cpp); 1e-6 of max |p|.
